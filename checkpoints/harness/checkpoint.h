@@ -1,0 +1,79 @@
+// The checkpoint harness, shared by every milestone.
+//
+// A checkpoint has two halves:
+//  * the RENDER half runs the implementation under test on a scene and returns Artifacts
+//    (images and numbers). It is the only part that executes a student's code.
+//  * the JUDGE half decides the verdict from the Artifacts, the scene's trusted description
+//    and the expected PNG alone.
+//
+// `make check` runs both halves in one process, so a breakpoint in a student's function is
+// hit straight from the checkpoint. For grading, RASTER_CHECKPOINT_MODE=render writes the
+// artifacts to RASTER_ARTIFACTS_DIR and stops, and RASTER_CHECKPOINT_MODE=judge reads them
+// back without running any student code: the grader runs the first in a sandbox and the
+// second in a trusted process, so no verdict depends on code a student wrote.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "raster/compare.h"
+#include "raster/image.h"
+
+namespace cp {
+
+// What the render half produces.
+struct Artifacts {
+    std::map<std::string, raster::Image> images;  // "main" is compared with the expected PNG
+    std::map<std::string, double> values;         // numbers a scene asks for (clip results...)
+    long long stray_writes = 0;  // writes outside any image, summed (see Image::stray_writes)
+    double seconds = 0;          // render time of the implementation (best of a few runs)
+};
+
+// How strictly the main image must match the expected PNG. Pixels outside `lenient` must
+// match to within strict_channel_diff levels; pixels inside it may differ, but at most
+// max_lenient_diffs of them. `why` says why this policy is fair; it is printed on failure.
+struct Tolerance {
+    int strict_channel_diff = 0;
+    raster::Mask lenient;  // empty mask: every pixel is strict
+    long long max_lenient_diffs = 0;
+    std::string why;
+};
+
+// One thing the judge found wrong, in a student's words. `topic` is a short tag naming the
+// idea the student should revisit ("endpoint", "octant", "clipping", ...): the summary table
+// shows it, and the project's own tests check that each deliberate bug names its concept.
+struct Finding {
+    std::string topic;
+    std::string message;
+};
+
+struct Judgement {
+    std::vector<Finding> findings;  // empty: the properties hold
+    Tolerance tolerance;            // the policy for comparing "main" with the expected PNG
+};
+
+// Everything the harness needs to know about one milestone's checkpoints.
+struct Suite {
+    std::string milestone;  // "m1"
+    std::vector<std::string> ids;
+    std::function<std::string(const std::string& id)> title;
+    std::function<std::string(const std::string& id)> hint;  // what a failure usually means
+    std::function<Artifacts(const std::string& id)> render_student;    // code under test
+    std::function<Artifacts(const std::string& id)> render_reference;  // for timing only
+    std::function<Judgement(const std::string& id, const Artifacts&)> judge;
+};
+
+// Registers one Catch2 test case per checkpoint of the suite (named by its id, tagged with
+// the milestone). Call it from a static initializer in the milestone's test file.
+bool register_suite(const Suite& suite);
+
+// Runs one checkpoint: render (or read artifacts), judge, compare, report, record.
+void run_checkpoint(const Suite& suite, const std::string& id);
+
+// Helpers shared by renderers and judges.
+double time_best_of(const std::function<void()>& fn);  // seconds; a few runs for tiny scenes
+std::string expected_png_path(const std::string& milestone, const std::string& id);
+
+}  // namespace cp

@@ -1,0 +1,84 @@
+#include "harness/record.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <map>
+
+namespace fs = std::filesystem;
+
+namespace cp {
+
+namespace {
+
+// Text values never contain tabs or newlines (ids, titles and concept tags are ours), so a
+// "key<TAB>value" line format is enough and keeps the files readable by eye.
+void put_metrics(std::ostream& out, const std::string& prefix, const raster::ImageMetrics& m) {
+    out << prefix << "differing_pixels\t" << m.differing_pixels << "\n"
+        << prefix << "differing_share\t" << m.differing_share << "\n"
+        << prefix << "max_channel_diff\t" << m.max_channel_diff << "\n"
+        << prefix << "mean_abs_error\t" << m.mean_abs_error << "\n"
+        << prefix << "psnr_db\t" << m.psnr_db << "\n";
+}
+
+void get_metric(raster::ImageMetrics& m, const std::string& key, const std::string& v) {
+    if (key == "differing_pixels") m.differing_pixels = std::stoll(v);
+    if (key == "differing_share") m.differing_share = std::stod(v);
+    if (key == "max_channel_diff") m.max_channel_diff = std::stoi(v);
+    if (key == "mean_abs_error") m.mean_abs_error = std::stod(v);
+    if (key == "psnr_db") {
+        m.psnr_db = v == "inf" ? std::numeric_limits<double>::infinity() : std::stod(v);
+    }
+}
+
+}  // namespace
+
+void write_record(const Record& r) {
+    const char* env = std::getenv("RASTER_RESULTS_DIR");
+    const fs::path dir = env && *env ? env : "checkpoint_results";
+    fs::create_directories(dir);
+    std::ofstream out(dir / (r.id + ".txt"));
+    out << std::setprecision(10);
+    out << "id\t" << r.id << "\nmilestone\t" << r.milestone << "\ntitle\t" << r.title
+        << "\nstatus\t" << r.status << "\nconcepts\t" << r.concepts << "\nhas_metrics\t"
+        << r.has_metrics << "\nstudent_ms\t" << r.student_ms << "\nreference_ms\t"
+        << r.reference_ms << "\noutput_dir\t" << r.output_dir << "\n";
+    put_metrics(out, "student.", r.student);
+    put_metrics(out, "reference.", r.reference);
+}
+
+std::vector<Record> read_records(const std::string& dir) {
+    std::vector<Record> records;
+    if (!fs::is_directory(dir)) return records;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        if (entry.path().extension() != ".txt") continue;
+        std::ifstream in(entry.path());
+        Record r;
+        std::string line;
+        while (std::getline(in, line)) {
+            const auto tab = line.find('\t');
+            if (tab == std::string::npos) continue;
+            const std::string key = line.substr(0, tab), v = line.substr(tab + 1);
+            if (key == "id") r.id = v;
+            else if (key == "milestone") r.milestone = v;
+            else if (key == "title") r.title = v;
+            else if (key == "status") r.status = v;
+            else if (key == "concepts") r.concepts = v;
+            else if (key == "has_metrics") r.has_metrics = v == "1";
+            else if (key == "student_ms") r.student_ms = std::stod(v);
+            else if (key == "reference_ms") r.reference_ms = std::stod(v);
+            else if (key == "output_dir") r.output_dir = v;
+            else if (key.rfind("student.", 0) == 0) get_metric(r.student, key.substr(8), v);
+            else if (key.rfind("reference.", 0) == 0) get_metric(r.reference, key.substr(10), v);
+        }
+        if (!r.id.empty()) records.push_back(r);
+    }
+    std::sort(records.begin(), records.end(),
+              [](const Record& a, const Record& b) { return a.id < b.id; });
+    return records;
+}
+
+}  // namespace cp

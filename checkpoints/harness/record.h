@@ -1,0 +1,26 @@
+// One checkpoint's result as the summary sees it: written by every checkpoint process into
+// RASTER_RESULTS_DIR (one small file per checkpoint, so parallel ctest runs never share a
+// file), read back by the summary tool that prints the error-against-time table.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "raster/compare.h"
+
+namespace cp {
+
+struct Record {
+    std::string id, milestone, title;
+    std::string status;    // pass, fail, or crashed (the process never finished the checkpoint)
+    std::string concepts;  // comma-separated concept tags of the findings
+    bool has_metrics = false;
+    raster::ImageMetrics student, reference;  // each against the expected image
+    double student_ms = 0, reference_ms = 0;
+    std::string output_dir;  // where the failure pictures are
+};
+
+void write_record(const Record& r);  // into $RASTER_RESULTS_DIR (default: checkpoint_results)
+std::vector<Record> read_records(const std::string& dir);  // sorted by id
+
+}  // namespace cp

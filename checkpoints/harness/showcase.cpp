@@ -1,0 +1,69 @@
+#include "harness/showcase.h"
+
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "raster/compare.h"
+#include "raster/io.h"
+
+namespace fs = std::filesystem;
+
+namespace cp {
+
+int showcase(const std::vector<ShowItem>& items, const std::string& out_dir, const std::string& heading) {
+    fs::create_directories(out_dir);
+    std::ofstream html(fs::path(out_dir) / "index.html");
+    html << "<!doctype html><meta charset=utf-8><title>" << heading << "</title>\n"
+         << "<style>body{font-family:sans-serif;background:#222;color:#eee}"
+            "img{image-rendering:pixelated;width:256px;border:1px solid #555}"
+            "td{padding:6px;vertical-align:top}</style>\n<h1>"
+         << heading << "</h1>\n<table><tr><th>scene<th>rendered<th>expected<th>error<th>time</tr>\n";
+
+    std::cout << heading << "\n"
+              << std::left << std::setw(26) << "scene" << std::right << std::setw(12) << "px differ"
+              << std::setw(12) << "mean err" << std::setw(10) << "PSNR" << std::setw(12) << "time ms"
+              << "  file\n"
+              << std::string(100, '-') << "\n";
+    int status = 0;
+    for (const ShowItem& item : items) {
+        try {
+            Artifacts a;
+            const double seconds = time_best_of([&] { a = item.render(item.id); });
+            const raster::Image& img = a.images.at("main");
+            const fs::path png = fs::path(out_dir) / (item.id + ".png");
+            raster::write_png(png.string(), img);
+            const std::string expected_path = expected_png_path(item.milestone, item.id);
+            std::string psnr = "-", differ = "-", mae = "-";
+            if (fs::exists(expected_path)) {
+                const raster::ImageMetrics m = raster::compare(img, raster::read_png(expected_path));
+                differ = std::to_string(m.differing_pixels);
+                std::ostringstream s1, s2;
+                s1 << std::fixed << std::setprecision(3) << m.mean_abs_error;
+                s2 << std::fixed << std::setprecision(1) << m.psnr_db;
+                mae = s1.str();
+                psnr = std::isinf(m.psnr_db) ? "inf" : s2.str();
+            }
+            std::cout << std::left << std::setw(26) << item.id << std::right << std::setw(12) << differ
+                      << std::setw(12) << mae << std::setw(10) << psnr << std::setw(12) << std::fixed
+                      << std::setprecision(3) << seconds * 1e3 << "  " << png.string() << "\n";
+            html << "<tr><td><b>" << item.id << "</b><br>" << item.title << "<td><img src=\"" << item.id
+                 << ".png\"><td><img src=\"" << fs::absolute(expected_path).string() << "\"><td>" << differ
+                 << " px differ<br>mean error " << mae << "<br>PSNR " << psnr << "<td>" << std::setprecision(3)
+                 << seconds * 1e3 << " ms</tr>\n";
+        } catch (const std::exception& e) {
+            std::cout << std::left << std::setw(26) << item.id << " failed: " << e.what() << "\n";
+            status = 1;
+        }
+    }
+    html << "</table>\n";
+    std::cout << std::string(100, '-') << "\n"
+              << "Pictures and index.html: " << fs::absolute(out_dir).string() << "\n";
+    return status;
+}
+
+}  // namespace cp

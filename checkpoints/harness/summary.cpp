@@ -1,0 +1,106 @@
+// Prints the table that ends `make check` (every checkpoint's verdict, image error and render
+// time, yours against the reference) and writes the same data as JSON.
+//
+//   checkpoint_summary <results-dir> <json-out> [expected-count]
+//
+// expected-count is how many checkpoints were run; fewer records than that means some
+// process never started (a build failure), which the table says.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "harness/record.h"
+
+namespace {
+
+std::string json_escape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) continue;
+        out += c;
+    }
+    return out;
+}
+
+std::string json_number(double v) {
+    if (!std::isfinite(v)) return "null";  // JSON has no infinity (PSNR of identical images)
+    std::ostringstream s;
+    s << std::setprecision(10) << v;
+    return s.str();
+}
+
+std::string json_metrics(const raster::ImageMetrics& m) {
+    return "{\"differing_pixels\": " + std::to_string(m.differing_pixels) +
+           ", \"differing_share\": " + json_number(m.differing_share) +
+           ", \"max_channel_diff\": " + std::to_string(m.max_channel_diff) +
+           ", \"mean_abs_error\": " + json_number(m.mean_abs_error) +
+           ", \"psnr_db\": " + json_number(m.psnr_db) + "}";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 3) {
+        std::cerr << "usage: checkpoint_summary <results-dir> <json-out> [expected-count]\n";
+        return 2;
+    }
+    const auto records = cp::read_records(argv[1]);
+    int passed = 0, failed = 0, crashed = 0;
+
+    std::cout << "\n"
+              << std::left << std::setw(28) << "checkpoint" << std::setw(8) << "result"
+              << std::right << std::setw(12) << "px differ" << std::setw(10) << "mean err"
+              << std::setw(11) << "your ms" << std::setw(11) << "ref ms" << "  concept\n"
+              << std::string(100, '-') << "\n";
+    std::ofstream json(argv[2]);
+    json << "{\n  \"checkpoints\": [\n";
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const cp::Record& r = records[i];
+        std::string result = r.status == "pass" ? "PASS" : r.status == "fail" ? "FAIL" : "CRASH";
+        passed += r.status == "pass";
+        failed += r.status == "fail";
+        crashed += r.status != "pass" && r.status != "fail";
+        std::cout << std::left << std::setw(28) << r.id << std::setw(8) << result << std::right;
+        if (r.has_metrics) {
+            std::cout << std::setw(12) << r.student.differing_pixels << std::setw(10) << std::fixed
+                      << std::setprecision(3) << r.student.mean_abs_error << std::setw(11)
+                      << r.student_ms << std::setw(11) << r.reference_ms;
+        } else {
+            std::cout << std::setw(12) << "-" << std::setw(10) << "-" << std::setw(11) << "-"
+                      << std::setw(11) << "-";
+        }
+        std::cout << "  "
+                  << (r.status == "crashed" ? "crashed or timed out: run it alone to see why"
+                                            : r.concepts)
+                  << "\n";
+        json << "    {\"id\": \"" << json_escape(r.id) << "\", \"milestone\": \""
+             << json_escape(r.milestone) << "\", \"title\": \"" << json_escape(r.title)
+             << "\", \"status\": \"" << r.status << "\", \"concepts\": \""
+             << json_escape(r.concepts) << "\", \"student_ms\": " << json_number(r.student_ms)
+             << ", \"reference_ms\": " << json_number(r.reference_ms)
+             << ", \"student_error\": " << (r.has_metrics ? json_metrics(r.student) : "null")
+             << ", \"reference_error\": " << (r.has_metrics ? json_metrics(r.reference) : "null")
+             << ", \"pictures\": \"" << json_escape(r.output_dir) << "\"}"
+             << (i + 1 < records.size() ? "," : "") << "\n";
+    }
+    json << "  ],\n  \"passed\": " << passed << ",\n  \"failed\": " << failed
+         << ",\n  \"crashed\": " << crashed << "\n}\n";
+
+    std::cout << std::string(100, '-') << "\n"
+              << passed << " passed, " << failed + crashed << " failed" << "\n";
+    if (argc > 3) {
+        const long expected = std::stol(argv[3]);
+        if (static_cast<long>(records.size()) < expected) {
+            std::cout << expected - static_cast<long>(records.size())
+                      << " checkpoint(s) left no result: did the build fail?\n";
+        }
+    }
+    std::cout << "Pictures of each failure are listed in the output above; this table is also in "
+              << argv[2] << "\n";
+    return 0;
+}

@@ -1,0 +1,508 @@
+// Judge half of the milestone-1 checkpoints: decides from the scene (trusted data), the
+// artifacts and nothing else. It never calls the code under test or the reference; its
+// oracles are written independently (exact integer arithmetic for Bresenham, Liang-Barsky for
+// clipping, "coverage = 1 - distance" for Wu) so a bug shared with the reference is unlikely.
+#include "m1/judge.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <deque>
+#include <optional>
+#include <sstream>
+
+#include "m1/scenes.h"
+
+namespace m1cp {
+
+namespace {
+
+using raster::Image;
+using raster::Mask;
+
+struct Pix {
+    int x = 0, y = 0;
+};
+
+std::string str(Vec2 p) {
+    std::ostringstream s;
+    s << "(" << p.x << ", " << p.y << ")";
+    return s.str();
+}
+std::string str(Pix p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+
+// Liang-Barsky: the part of p0-p1 inside the closed box, or nothing.
+std::optional<std::pair<Vec2, Vec2>> clip_oracle(Vec2 p0, Vec2 p1, const Box& r) {
+    const Vec2 d = p1 - p0;
+    double t0 = 0, t1 = 1;
+    // Keep the t where p0 + t * d satisfies p * t <= q.
+    auto edge = [&](double p, double q) {
+        if (p == 0) return q >= 0;
+        const double t = q / p;
+        if (p < 0) {
+            if (t > t1) return false;
+            t0 = std::max(t0, t);
+        } else {
+            if (t < t0) return false;
+            t1 = std::min(t1, t);
+        }
+        return true;
+    };
+    if (!edge(-d.x, p0.x - r.xmin) || !edge(d.x, r.xmax - p0.x) || !edge(-d.y, p0.y - r.ymin) ||
+        !edge(d.y, r.ymax - p0.y)) {
+        return std::nullopt;
+    }
+    auto clamp = [&](Vec2 p) {
+        return Vec2{std::clamp(p.x, r.xmin, r.xmax), std::clamp(p.y, r.ymin, r.ymax)};
+    };
+    const Vec2 q0 = t0 == 0 ? p0 : clamp(p0 + t0 * d);
+    const Vec2 q1 = t1 == 1 ? p1 : clamp(p0 + t1 * d);
+    return std::make_pair(q0, q1);
+}
+
+int outcode_oracle(Vec2 p, const Box& r) {
+    return (p.x < r.xmin ? 1 : 0) | (p.x > r.xmax ? 2 : 0) | (p.y < r.ymin ? 4 : 0) |
+           (p.y > r.ymax ? 8 : 0);
+}
+
+std::string describe_direction(long long dx, long long dy) {
+    if (dx == 0 && dy == 0) return "a single pixel";
+    if (dy == 0) return dx > 0 ? "horizontal, going right" : "horizontal, going left";
+    if (dx == 0) return dy > 0 ? "vertical, going down" : "vertical, going up";
+    if (std::llabs(dx) == std::llabs(dy)) return "diagonal";
+    const bool steep = std::llabs(dy) > std::llabs(dx);
+    int octant;
+    if (dx > 0 && dy > 0) octant = steep ? 2 : 1;
+    else if (dx < 0 && dy > 0) octant = steep ? 3 : 4;
+    else if (dx < 0) octant = steep ? 6 : 5;
+    else octant = steep ? 7 : 8;
+    return "octant " + std::to_string(octant) + ", " + (steep ? "steep" : "shallow");
+}
+
+// What one segment of a scene may and must draw.
+struct Plan {
+    std::string name;  // "line from (..) to (..)" for messages
+    Color color;
+    bool exact = false;  // pixel-exact Bresenham rules apply
+    Pix p0, p1;          // exact: the endpoint pixels
+    long long steps = 0;  // exact: max(|dx|, |dy|)
+    std::vector<Pix> required;
+    std::vector<std::pair<Pix, Pix>> ties;     // exactly one of each pair (at least one if overlapping)
+    std::vector<Pix> candidates;               // every pixel it may draw
+    std::vector<std::vector<Pix>> band_columns;  // fuzzy: each needs one drawn pixel
+    std::vector<Pix> lenient;                  // may differ from the expected image
+    struct Aa {
+        Pix p;
+        double coverage;
+    };
+    std::vector<Aa> aa_expected;  // Wu interior pixels with their exact coverage
+};
+
+Vec2 snapped_center(Vec2 p) { return {std::floor(p.x) + 0.5, std::floor(p.y) + 0.5}; }
+
+bool inside(const Vec2& p, int w, int h) { return p.x >= 0 && p.y >= 0 && p.x < w && p.y < h; }
+
+// Bresenham's pixels, derived exactly: at step i the ideal minor coordinate is
+// minor0 + dminor * i / n; the nearest pixel is unique unless the remainder is exactly n / 2.
+void plan_exact(Plan& plan, Pix p0, Pix p1) {
+    plan.exact = true;
+    plan.p0 = p0;
+    plan.p1 = p1;
+    const long long dx = p1.x - p0.x, dy = p1.y - p0.y;
+    const bool x_major = std::llabs(dx) >= std::llabs(dy);
+    const long long n = std::max(std::llabs(dx), std::llabs(dy));
+    plan.steps = n;
+    const long long dmaj = x_major ? dx : dy, dmin = x_major ? dy : dx;
+    const int smaj = dmaj < 0 ? -1 : 1, smin = dmin < 0 ? -1 : 1;
+    const long long maj0 = x_major ? p0.x : p0.y, min0 = x_major ? p0.y : p0.x;
+    auto make = [x_major](long long maj, long long mn) {
+        return x_major ? Pix{int(maj), int(mn)} : Pix{int(mn), int(maj)};
+    };
+    for (long long i = 0; i <= n; ++i) {
+        const long long maj = maj0 + smaj * i;
+        if (n == 0) {
+            plan.required.push_back(p0);
+            break;
+        }
+        const long long num = std::llabs(dmin) * i, q = num / n, r = num % n;
+        const long long base = min0 + smin * q;
+        if (2 * r < n) {
+            plan.required.push_back(make(maj, base));
+        } else if (2 * r > n) {
+            plan.required.push_back(make(maj, base + smin));
+        } else {
+            const Pix a = make(maj, base), b = make(maj, base + smin);
+            plan.ties.push_back({a, b});
+            plan.lenient.push_back(a);
+            plan.lenient.push_back(b);
+        }
+    }
+    plan.candidates = plan.required;
+    for (const auto& [a, b] : plan.ties) {
+        plan.candidates.push_back(a);
+        plan.candidates.push_back(b);
+    }
+}
+
+// A line that needs clipping (or whose clipped endpoints are not exactly known): correct
+// implementations snap the clipped endpoints differently, so only a band is judged. The
+// snapped endpoint can be off the ideal line by 0.5 in the minor axis plus 0.5 * slope, and
+// the chosen pixel by another 0.5: hence the half-width 1 + 0.5 * |slope|.
+//
+// The line is walked column by column along its major axis, with its minor coordinate
+// computed from the slope. (Clipping by a parameter t along the segment would lose every
+// digit for endpoints at 1e300: the visible part is a 1e-298 sliver of t.)
+void plan_band(Plan& plan, Vec2 c0, Vec2 c1, int w, int h) {
+    const Vec2 d = c1 - c0;
+    const bool x_major = std::abs(d.x) >= std::abs(d.y);
+    const double dmaj = x_major ? d.x : d.y, dmin = x_major ? d.y : d.x;
+    const double slope = dmaj != 0 ? dmin / dmaj : 0;
+    const double half_width = 1.0 + 0.5 * std::abs(slope);
+    const double maj0 = x_major ? c0.x : c0.y, min0 = x_major ? c0.y : c0.x;
+    const double maj1 = x_major ? c1.x : c1.y;
+    const int major_size = x_major ? w : h, minor_size = x_major ? h : w;
+    const double lo = std::max(std::ceil(std::min(maj0, maj1) - 0.5), 0.0);
+    const double hi = std::min(std::floor(std::max(maj0, maj1) - 0.5), major_size - 1.0);
+    std::vector<std::vector<Pix>> visible;  // columns where the line is inside the image
+    for (double c = lo; c <= hi; ++c) {
+        const double m = min0 + (c + 0.5 - maj0) * slope;
+        if (!(m > -half_width && m < minor_size + half_width)) continue;
+        std::vector<Pix> band;
+        for (int r = std::max(0, int(std::floor(m - half_width))); r <= std::min(minor_size - 1, int(std::ceil(m + half_width))); ++r) {
+            if (std::abs(r + 0.5 - m) < half_width) band.push_back(x_major ? Pix{int(c), r} : Pix{r, int(c)});
+        }
+        plan.candidates.insert(plan.candidates.end(), band.begin(), band.end());
+        plan.lenient.insert(plan.lenient.end(), band.begin(), band.end());
+        if (m >= 0.5 && m <= minor_size - 0.5 && !band.empty()) visible.push_back(band);
+    }
+    // Every visible column needs a pixel, except the first and the last, where the
+    // implementation's own clipping decides.
+    for (std::size_t i = 1; i + 1 < visible.size(); ++i) plan.band_columns.push_back(visible[i]);
+}
+
+// Wu as pinned in lines.h, written as "coverage = 1 - distance from the pixel center to the
+// line, measured along the minor axis". Interior columns are exact; the end columns (and one
+// beyond each end, for implementations that add Wu's endpoint weighting) are lenient.
+void plan_aa(Plan& plan, Vec2 a, Vec2 b, int w, int h) {
+    const bool steep = std::abs(b.y - a.y) > std::abs(b.x - a.x);
+    if (steep) {
+        std::swap(a.x, a.y);
+        std::swap(b.x, b.y);
+    }
+    if (a.x > b.x) std::swap(a, b);
+    const int columns = steep ? h : w, rows = steep ? w : h;
+    const double gradient = b.x > a.x ? (b.y - a.y) / (b.x - a.x) : 0.0;
+    if (!std::isfinite(gradient)) return;
+    const double first = std::ceil(a.x - 0.5), last = std::floor(b.x - 0.5);
+    const double lo = std::max(first - 1, 0.0), hi = std::min(last + 1, columns - 1.0);
+    for (double c = lo; c <= hi; ++c) {
+        const double yc = a.y + gradient * (c + 0.5 - a.x);
+        if (!(yc > -2 && yc < rows + 2)) continue;
+        const bool end_column = c <= first || c >= last;
+        for (int r = std::max(0, int(std::floor(yc - 1.5))); r <= std::min(rows - 1, int(std::ceil(yc + 1.5))); ++r) {
+            const double dist = std::abs(r + 0.5 - yc);
+            const Pix p = steep ? Pix{r, int(c)} : Pix{int(c), r};
+            if (end_column) {
+                if (dist < 1.5) {
+                    plan.candidates.push_back(p);
+                    plan.lenient.push_back(p);
+                }
+            } else {
+                if (dist < 1.0) plan.candidates.push_back(p);
+                plan.aa_expected.push_back({p, std::max(0.0, 1.0 - dist)});
+            }
+        }
+    }
+}
+
+Plan make_plan(const Segment& s, int w, int h, bool force_band) {
+    Plan plan;
+    plan.name = "line from " + str(s.a) + " to " + str(s.b);
+    plan.color = s.color;
+    if (!raster::is_finite(s.a) || !raster::is_finite(s.b)) return plan;  // draws nothing
+    if (s.aa) {
+        plan_aa(plan, s.a, s.b, w, h);
+        return plan;
+    }
+    const Vec2 c0 = snapped_center(s.a), c1 = snapped_center(s.b);
+    if (!force_band && inside(c0, w, h) && inside(c1, w, h)) {
+        const Pix p0{int(c0.x), int(c0.y)}, p1{int(c1.x), int(c1.y)};
+        plan.name = "line from pixel " + str(p0) + " to " + str(p1) + " (" +
+                    describe_direction(p1.x - p0.x, p1.y - p0.y) + ")";
+        plan_exact(plan, p0, p1);
+    } else {
+        plan_band(plan, c0, c1, w, h);
+    }
+    return plan;
+}
+
+bool lit(const Image& img, Pix p) { return img.at(p.x, p.y) != raster::colors::black; }
+
+// ---- the checks ----
+
+struct Checker {
+    const Scene& scene;
+    const Image& img;
+    cp::Judgement& j;
+
+    void add(const std::string& topic, const std::string& message) {
+        j.findings.push_back({topic, message});
+    }
+
+    std::vector<int> claims;  // per pixel: how many lines may draw it (or expect it dark)
+
+    int& claim(Pix p) { return claims[std::size_t(p.y) * img.width() + p.x]; }
+
+    void check_lines(const std::vector<Plan>& plans) {
+        Mask allowed(img.width(), img.height());
+        claims.assign(std::size_t(img.width()) * img.height(), 0);
+        for (const Plan& plan : plans) {
+            Mask mine(img.width(), img.height());
+            for (Pix p : plan.candidates) mine.set(p.x, p.y);
+            for (const Plan::Aa& e : plan.aa_expected) mine.set(e.p.x, e.p.y);
+            for (int y = 0; y < img.height(); ++y) {
+                for (int x = 0; x < img.width(); ++x) claim({x, y}) += mine.get(x, y);
+            }
+            for (Pix p : plan.candidates) allowed.set(p.x, p.y);
+            for (Pix p : plan.lenient) j.tolerance.lenient.set(p.x, p.y);
+        }
+        // Stray pixels: lit, but no line may draw them.
+        long long strays = 0;
+        std::string first;
+        for (int y = 0; y < img.height(); ++y) {
+            for (int x = 0; x < img.width(); ++x) {
+                if (!allowed.get(x, y) && lit(img, {x, y})) {
+                    if (strays++ < 3) first += (first.empty() ? "" : ", ") + str(Pix{x, y});
+                }
+            }
+        }
+        if (strays > 0) {
+            add(scene.lines.empty() ? "outcode" : "stray pixels",
+                std::to_string(strays) + " pixel(s) are drawn where no line passes within half a "
+                "pixel of their center, e.g. " + first);
+        }
+        for (const Plan& plan : plans) check_plan(plan);
+    }
+
+    void check_plan(const Plan& plan) {
+        for (Pix p : plan.required) {
+            if (!lit(img, p)) {
+                const bool is_end = (p.x == plan.p0.x && p.y == plan.p0.y) || (p.x == plan.p1.x && p.y == plan.p1.y);
+                add(is_end ? "endpoint" : "octant",
+                    plan.name + ": pixel " + str(p) +
+                        (is_end ? " is an endpoint and must be drawn" : " is the nearest to the line in its column but is not drawn"));
+                return;  // one message per line is enough
+            }
+        }
+        for (const auto& [a, b] : plan.ties) {
+            if (!lit(img, a) && !lit(img, b)) {
+                add("octant", plan.name + ": the line passes exactly between " + str(a) + " and " +
+                                  str(b) + "; one of them must be drawn");
+                return;
+            }
+        }
+        for (const auto& band : plan.band_columns) {
+            if (std::none_of(band.begin(), band.end(), [&](Pix p) { return lit(img, p); })) {
+                add("clipping", plan.name + ": the visible part has a gap near " + str(band[band.size() / 2]) +
+                                    "; after clipping, every column (or row) the line crosses needs a pixel");
+                return;
+            }
+        }
+        if (scene.disjoint && plan.exact) check_exact_disjoint(plan);
+        check_aa(plan);
+    }
+
+    // On their own (no other line touches them), exact lines have a known pixel count,
+    // color, and form one 8-connected chain from endpoint to endpoint.
+    void check_exact_disjoint(const Plan& plan) {
+        Mask mine(img.width(), img.height());
+        long long count = 0;
+        for (Pix p : plan.candidates) {
+            if (mine.get(p.x, p.y)) continue;
+            mine.set(p.x, p.y);
+            if (!lit(img, p)) continue;
+            ++count;
+            if (img.at(p.x, p.y) != plan.color) {
+                add("color", plan.name + ": pixel " + str(p) + " has the wrong color");
+                return;
+            }
+        }
+        if (count != plan.steps + 1) {
+            add("pixel count", plan.name + ": " + std::to_string(count) + " pixels drawn, expected " +
+                                   std::to_string(plan.steps + 1) +
+                                   " (one per step along the longer axis, both endpoints included)");
+            return;
+        }
+        // Breadth-first search over the line's lit pixels.
+        Mask seen(img.width(), img.height());
+        std::deque<Pix> queue{plan.p0};
+        seen.set(plan.p0.x, plan.p0.y);
+        while (!queue.empty()) {
+            const Pix p = queue.front();
+            queue.pop_front();
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const Pix q{p.x + dx, p.y + dy};
+                    if (mine.get(q.x, q.y) && !seen.get(q.x, q.y) && lit(img, q)) {
+                        seen.set(q.x, q.y);
+                        queue.push_back(q);
+                    }
+                }
+            }
+        }
+        if (!seen.get(plan.p1.x, plan.p1.y)) {
+            add("connectivity", plan.name + ": the pixels do not form one 8-connected chain from " +
+                                    str(plan.p0) + " to " + str(plan.p1));
+        }
+    }
+
+    void check_aa(const Plan& plan) {
+        // The scene background is black, so a pixel's expected color is color * coverage.
+        // Tolerance: 3 levels per channel. Rounding in blend() and floating-point differences
+        // (FMA, -O3) move a channel by at most 1; a real error (swapped weights, half-pixel
+        // offset) moves it by tens of levels.
+        constexpr int kTol = 3;
+        for (const Plan::Aa& e : plan.aa_expected) {
+            if (claim(e.p) > 1) {  // another line crosses here: only the other checks apply
+                j.tolerance.lenient.set(e.p.x, e.p.y);
+                continue;
+            }
+            const Color want = raster::mix(raster::colors::black, plan.color, e.coverage);
+            const Color swapped = raster::mix(raster::colors::black, plan.color, 1.0 - e.coverage);
+            const Color got = img.at(e.p.x, e.p.y);
+            auto near = [](Color a, Color b) {
+                return std::abs(a.r - b.r) <= kTol && std::abs(a.g - b.g) <= kTol && std::abs(a.b - b.b) <= kTol;
+            };
+            if (near(got, want)) continue;
+            std::ostringstream msg;
+            msg << plan.name << ": pixel " << str(e.p) << " has intensity " << int(std::max({got.r, got.g, got.b}))
+                << ", expected about " << int(std::max({want.r, want.g, want.b})) << " (coverage "
+                << e.coverage << ")";
+            if (e.coverage < 1.0 && near(got, swapped) && std::abs(e.coverage - 0.5) > 0.05) {
+                msg << ". The weights look swapped: the pixel nearer the line must get 1 - f";
+                add("wu weights", msg.str());
+            } else {
+                add("wu coverage", msg.str());
+            }
+            return;
+        }
+    }
+
+    void check_outcodes() {
+        long long wrong = 0;
+        std::string first;
+        for (int y = 0; y < img.height(); ++y) {
+            for (int x = 0; x < img.width(); ++x) {
+                const int want = outcode_oracle({x + 0.5, y + 0.5}, scene.viewport);
+                if (img.at(x, y) != outcode_color(want) && wrong++ == 0) {
+                    std::ostringstream s;
+                    s << "the pixel center (" << x + 0.5 << ", " << y + 0.5 << ") should get outcode " << want
+                      << " (" << (want == 0 ? "inside" : "") << (want & 1 ? "LEFT " : "") << (want & 2 ? "RIGHT " : "")
+                      << (want & 4 ? "TOP " : "") << (want & 8 ? "BOTTOM " : "") << ")";
+                    first = s.str();
+                }
+            }
+        }
+        if (wrong > 0) add("outcode", std::to_string(wrong) + " pixel center(s) got the wrong outcode; " + first);
+    }
+
+    void check_clip_values(const cp::Artifacts& art) {
+        for (std::size_t i = 0; i < scene.lines.size(); ++i) {
+            const Segment& s = scene.lines[i];
+            const std::string key = "clip." + std::to_string(i) + ".";
+            auto value = [&](const std::string& k) {
+                const auto it = art.values.find(key + k);
+                return it == art.values.end() ? std::nan("") : it->second;
+            };
+            const auto want = clip_oracle(s.a, s.b, scene.viewport);
+            const bool kept = value("kept") == 1.0;
+            const std::string call = "clip_line(" + str(s.a) + ", " + str(s.b) + ")";
+            if (kept != want.has_value()) {
+                add("clipping", call + " returned " + (kept ? "true" : "false") +
+                                    (want ? ", but the segment crosses the viewport from " + str(want->first) +
+                                                " to " + str(want->second)
+                                          : ", but the segment misses the viewport"));
+                continue;
+            }
+            if (!kept) continue;
+            const Vec2 a{value("ax"), value("ay")}, b{value("bx"), value("by")};
+            auto close = [](Vec2 p, Vec2 q) {
+                const double tol = 1e-7 * (1 + std::max(std::abs(q.x), std::abs(q.y)));
+                return std::abs(p.x - q.x) <= tol && std::abs(p.y - q.y) <= tol;
+            };
+            if (!close(a, want->first) || !close(b, want->second)) {
+                add("clipping", call + " gave " + str(a) + " - " + str(b) + ", expected " + str(want->first) +
+                                    " - " + str(want->second) + " (a stays on a's side)");
+            }
+        }
+    }
+};
+
+}  // namespace
+
+cp::Judgement judge(const std::string& id, const cp::Artifacts& art) {
+    const Scene& s = scene(id);
+    cp::Judgement j;
+    j.tolerance.lenient = Mask(s.width, s.height);
+    const auto main_it = art.images.find("main");
+    if (main_it == art.images.end()) return j;  // the harness reports the missing image
+    const Image& img = main_it->second;
+    if (img.width() != s.width || img.height() != s.height) return j;  // size mismatch: ditto
+
+    if (art.stray_writes > 0) {
+        j.findings.push_back({"clipping", "your code asked to write " + std::to_string(art.stray_writes) +
+                                              " pixel(s) outside the image (Image::stray_writes). Clip "
+                                              "first, so the work stays proportional to the visible pixels"});
+    }
+    Checker check{s, img, j, {}};
+    std::vector<Plan> plans;
+    const bool has_aa = std::any_of(s.lines.begin(), s.lines.end(), [](const Segment& g) { return g.aa; });
+    switch (s.kind) {
+        case Kind::kOutcodes:
+            check.check_outcodes();
+            break;
+        case Kind::kLines:
+            for (const Segment& seg : s.lines) plans.push_back(make_plan(seg, s.width, s.height, false));
+            check.check_lines(plans);
+            break;
+        case Kind::kClip: {
+            // The picture: each whole line, the viewport border and each clipped part, all drawn
+            // with draw_line. Judged as bands: the numbers from clip_line are judged exactly.
+            for (const Segment& seg : s.lines) plans.push_back(make_plan({seg.a, seg.b, kUnclippedColor}, s.width, s.height, true));
+            const Box& v = s.viewport;
+            const Vec2 corners[] = {{v.xmin, v.ymin}, {v.xmax, v.ymin}, {v.xmax, v.ymax}, {v.xmin, v.ymax}};
+            for (int k = 0; k < 4; ++k) plans.push_back(make_plan({corners[k], corners[(k + 1) % 4], kViewportColor}, s.width, s.height, true));
+            for (const Segment& seg : s.lines) {
+                if (const auto part = clip_oracle(seg.a, seg.b, v)) {
+                    plans.push_back(make_plan({part->first, part->second, seg.color}, s.width, s.height, true));
+                }
+            }
+            check.check_lines(plans);
+            check.check_clip_values(art);
+            break;
+        }
+    }
+    if (s.check_reversed) {
+        const auto rev = art.images.find("reversed");
+        if (rev == art.images.end() || !(rev->second == img)) {
+            long long differ = 0;
+            if (rev != art.images.end() && rev->second.width() == img.width() && rev->second.height() == img.height()) {
+                differ = raster::compare(rev->second, img).differing_pixels;
+            }
+            j.findings.push_back({"symmetry", "drawing every line from b to a changed " + std::to_string(differ) +
+                                                  " pixel(s) (see reversed.png): where the line passes exactly "
+                                                  "between two pixels, the choice must not depend on the direction"});
+        }
+    }
+
+    long long lenient = 0;
+    for (unsigned char b : j.tolerance.lenient.bits) lenient += b;
+    j.tolerance.strict_channel_diff = has_aa ? 3 : 0;
+    j.tolerance.max_lenient_diffs = lenient;
+    j.tolerance.why = "the lenient pixels are exactly those where correct implementations may "
+                      "legitimately differ (ties, bands of clipped lines, ends of Wu lines), and the "
+                      "pixel rules above check them instead";
+    return j;
+}
+
+}  // namespace m1cp

@@ -1,0 +1,77 @@
+// Render half: turns a scene into calls to the milestone-1 functions. Everything here runs
+// the code under test, so nothing here decides a verdict.
+#include "m1/render.h"
+
+#include "lines.h"
+#include "m1/scenes.h"
+
+namespace m1cp {
+namespace RASTER_FLAVOUR {
+
+namespace {
+
+m1::Rect to_rect(const Box& b) { return {b.xmin, b.ymin, b.xmax, b.ymax}; }
+
+void draw(raster::Image& img, const Segment& s, bool reversed) {
+    const Vec2 a = reversed ? s.b : s.a;
+    const Vec2 b = reversed ? s.a : s.b;
+    if (s.aa) {
+        m1::draw_line_aa(img, a, b, s.color);
+    } else {
+        m1::draw_line(img, a, b, s.color);
+    }
+}
+
+}  // namespace
+
+cp::Artifacts render(const std::string& id) {
+    const Scene& s = scene(id);
+    cp::Artifacts out;
+    raster::Image img(s.width, s.height);
+
+    switch (s.kind) {
+        case Kind::kLines:
+            for (const Segment& seg : s.lines) draw(img, seg, false);
+            if (s.check_reversed) {
+                raster::Image rev(s.width, s.height);
+                for (const Segment& seg : s.lines) draw(rev, seg, true);
+                out.stray_writes += rev.stray_writes();
+                out.images["reversed"] = rev;
+            }
+            break;
+        case Kind::kOutcodes: {
+            const m1::Rect r = to_rect(s.viewport);
+            for (int y = 0; y < s.height; ++y) {
+                for (int x = 0; x < s.width; ++x) {
+                    img.set(x, y, outcode_color(m1::outcode({x + 0.5, y + 0.5}, r)));
+                }
+            }
+            break;
+        }
+        case Kind::kClip: {
+            const m1::Rect r = to_rect(s.viewport);
+            for (const Segment& seg : s.lines) m1::draw_line(img, seg.a, seg.b, kUnclippedColor);
+            const Box& v = s.viewport;
+            const Vec2 corners[] = {{v.xmin, v.ymin}, {v.xmax, v.ymin}, {v.xmax, v.ymax}, {v.xmin, v.ymax}};
+            for (int k = 0; k < 4; ++k) m1::draw_line(img, corners[k], corners[(k + 1) % 4], kViewportColor);
+            for (std::size_t i = 0; i < s.lines.size(); ++i) {
+                Vec2 a = s.lines[i].a, b = s.lines[i].b;
+                const bool kept = m1::clip_line(a, b, r);
+                const std::string key = "clip." + std::to_string(i) + ".";
+                out.values[key + "kept"] = kept;
+                out.values[key + "ax"] = a.x;
+                out.values[key + "ay"] = a.y;
+                out.values[key + "bx"] = b.x;
+                out.values[key + "by"] = b.y;
+                if (kept) m1::draw_line(img, a, b, s.lines[i].color);
+            }
+            break;
+        }
+    }
+    out.stray_writes += img.stray_writes();
+    out.images["main"] = std::move(img);
+    return out;
+}
+
+}  // namespace RASTER_FLAVOUR
+}  // namespace m1cp

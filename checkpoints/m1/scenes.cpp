@@ -1,0 +1,364 @@
+#include "m1/scenes.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace m1cp {
+
+namespace {
+
+using namespace raster::colors;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The center of pixel (i, j): scenes use it so that endpoints are unambiguous.
+constexpr Vec2 px(double i, double j) { return {i + 0.5, j + 0.5}; }
+
+Segment line(Vec2 a, Vec2 b, Color c = white) { return {a, b, c, false}; }
+Segment aa_line(Vec2 a, Vec2 b, Color c = white) { return {a, b, c, true}; }
+
+// The eight octants, numbered as in the lesson (y grows downward):
+//   1 shallow right-down   2 steep down-right   3 steep down-left   4 shallow left-down
+//   5 shallow left-up      6 steep up-left      7 steep up-right    8 shallow right-up
+// Each octant scene is the octant-1 scene mapped by the symmetry of the 48x48 square that
+// carries octant 1 onto that octant, so all eight test the same slopes.
+Scene octant_scene(int octant) {
+    constexpr int n = 47;  // last pixel index of a 48x48 image
+    struct Ij {
+        int i, j;
+    };
+    auto map = [octant](Ij p) -> Ij {
+        switch (octant) {
+            case 1: return p;
+            case 2: return {p.j, p.i};
+            case 3: return {n - p.j, p.i};
+            case 4: return {n - p.i, p.j};
+            case 5: return {n - p.i, n - p.j};
+            case 6: return {n - p.j, n - p.i};
+            case 7: return {p.j, n - p.i};
+            default: return {p.i, n - p.j};
+        }
+    };
+    // Octant-1 lines with slopes 1/4 (every other step a tie), 17/28, 1/4 from an odd start,
+    // 11/12 (nearly diagonal) and 5/43 (long and flat), placed so no two share a pixel and
+    // each can be checked on its own.
+    const Ij base[][2] = {{{4, 1}, {40, 10}}, {{18, 13}, {46, 30}}, {{9, 33}, {29, 38}},
+                          {{2, 12}, {14, 23}}, {{2, 41}, {45, 46}}};
+    const Color palette[] = {white, yellow, cyan, magenta, green};
+    const char* words[] = {"",
+                           "shallow, going right and down",
+                           "steep, going down and right",
+                           "steep, going down and left",
+                           "shallow, going left and down",
+                           "shallow, going left and up",
+                           "steep, going up and left",
+                           "steep, going up and right",
+                           "shallow, going right and up"};
+    Scene s;
+    s.id = "m1.octant_" + std::to_string(octant);
+    s.title = std::string("octant ") + std::to_string(octant) + ": " + words[octant];
+    s.hint = "Lines in this octant are wrong. Check the step signs (sx, sy) and which axis is "
+             "the major one (|dx| >= |dy|): one loop with signed steps covers all eight octants.";
+    s.width = s.height = 48;
+    s.disjoint = true;
+    for (int k = 0; k < 5; ++k) {
+        const Ij a = map(base[k][0]), b = map(base[k][1]);
+        s.lines.push_back(line(px(a.i, a.j), px(b.i, b.j), palette[k]));
+    }
+    return s;
+}
+
+std::vector<Scene> make_scenes() {
+    std::vector<Scene> all;
+    for (int octant = 1; octant <= 8; ++octant) all.push_back(octant_scene(octant));
+
+    {
+        Scene s;
+        s.id = "m1.axis_aligned";
+        s.title = "horizontal and vertical lines, both directions";
+        s.hint = "When dy = 0 or dx = 0 the error term must never make the minor axis step.";
+        s.width = s.height = 48;
+        s.disjoint = true;
+        s.lines = {line(px(4, 4), px(43, 4)), line(px(43, 8), px(4, 8), yellow),
+                   line(px(6, 14), px(6, 43), cyan), line(px(12, 43), px(12, 14), magenta),
+                   line(px(20, 20), px(21, 20), green), line(px(30, 30), px(30, 31), red)};
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.diagonals";
+        s.title = "45-degree lines in the four diagonal directions";
+        s.hint = "At |dx| = |dy| both axes step every time; check the comparison that picks "
+                 "the major axis and the error update.";
+        s.width = s.height = 48;
+        s.disjoint = true;
+        s.lines = {line(px(3, 3), px(20, 20)), line(px(44, 3), px(27, 20), yellow),
+                   line(px(3, 44), px(20, 27), cyan), line(px(44, 44), px(27, 27), magenta)};
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.endpoints";
+        s.title = "endpoints are inclusive, and a real endpoint means the pixel containing it";
+        s.hint = "Both endpoint pixels belong to the line: loop while the major coordinate has "
+                 "not passed the last pixel (<=, not <). Endpoints snap with floor(), not round().";
+        s.width = s.height = 40;
+        s.disjoint = true;
+        // Two- and three-pixel lines in every direction.
+        const int d[][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+        for (int k = 0; k < 8; ++k) {
+            const int cx = 4 + 4 * k;
+            s.lines.push_back(line(px(cx, 4), px(cx + d[k][0], 4 + d[k][1])));
+            s.lines.push_back(line(px(cx, 12), px(cx + 2 * d[k][0], 12 + 2 * d[k][1]), yellow));
+        }
+        // Endpoints that are not pixel centers: each still selects the pixel containing it.
+        s.lines.push_back(line({3.0, 20.0}, {20.99, 24.99}, cyan));       // (3,20)-(20,24)
+        s.lines.push_back(line({36.999, 20.2}, {24.01, 22.7}, magenta));  // (36,20)-(24,22)
+        s.lines.push_back(line({5.6, 30.4}, {30.3, 35.8}, green));        // (5,30)-(30,35)
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.symmetry";
+        s.title = "a->b draws the same pixels as b->a, ties included";
+        s.hint = "Where the ideal line passes exactly between two pixels the choice is yours, "
+                 "but it must not depend on the drawing direction: put the endpoints in a "
+                 "fixed order before drawing.";
+        s.width = s.height = 48;
+        s.disjoint = true;
+        s.check_reversed = true;
+        // dx = 2 * dy with dy odd: every other step is an exact tie.
+        s.lines = {line(px(2, 2), px(16, 9)),           line(px(44, 4), px(30, 11), yellow),
+                   line(px(4, 16), px(11, 30), cyan),   line(px(40, 16), px(33, 30), magenta),
+                   line(px(2, 36), px(28, 45), green),  line(px(44, 44), px(30, 35), red)};
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.star";
+        s.title = "eight-octant star (demo)";
+        s.hint = "Each ray of the star is one octant or axis; the failing pixels show which.";
+        s.width = s.height = 128;
+        s.demo = true;
+        const Color palette[] = {white, yellow, cyan, magenta, green, red, blue, gray};
+        for (int k = 0; k < 16; ++k) {
+            const double angle = k * std::numbers::pi / 8 + 0.2;
+            const Vec2 tip{64 + 58 * std::cos(angle), 64 + 58 * std::sin(angle)};
+            s.lines.push_back(line({64.5, 64.5}, tip, palette[k % 8]));
+        }
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.clock";
+        s.title = "clock face: radial lines every 15 degrees (demo)";
+        s.hint = "Radial lines cover every octant; snap each real endpoint with floor().";
+        s.width = s.height = 128;
+        s.demo = true;
+        for (int k = 0; k < 24; ++k) {
+            const double angle = k * std::numbers::pi / 12;
+            const double r0 = k % 2 == 0 ? 30 : 44;  // hour marks are longer
+            const Vec2 dir{std::cos(angle), std::sin(angle)};
+            s.lines.push_back(line({64 + r0 * dir.x, 64 + r0 * dir.y},
+                                   {64 + 60 * dir.x, 64 + 60 * dir.y}, k % 2 == 0 ? white : gray));
+        }
+        s.lines.push_back(line({64, 64}, {64 + 24 * std::cos(-1.2), 64 + 24 * std::sin(-1.2)}, yellow));
+        s.lines.push_back(line({64, 64}, {64 + 40 * std::cos(0.5), 64 + 40 * std::sin(0.5)}, cyan));
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.outcodes";
+        s.title = "Cohen-Sutherland outcodes of every pixel center";
+        s.hint = "TOP is y < ymin (the top of the screen, since y grows downward); the border "
+                 "itself is inside; a point can be both LEFT and TOP.";
+        s.width = s.height = 48;
+        s.kind = Kind::kOutcodes;
+        s.viewport = {12.5, 16.5, 35.5, 31.5};  // borders through pixel centers
+        all.push_back(s);
+    }
+
+    // Clipping against a viewport smaller than the image. The viewport's sides are not on
+    // pixel centers, so an off-by-one in the clip shows up as a wrong coordinate.
+    const Box vp{10.25, 12.75, 53.5, 50.0};
+    auto clip_scene = [&](std::string id, std::string title, std::string hint,
+                          std::vector<Segment> lines) {
+        Scene s;
+        s.id = std::move(id);
+        s.title = std::move(title);
+        s.hint = std::move(hint);
+        s.kind = Kind::kClip;
+        s.viewport = vp;
+        s.lines = std::move(lines);
+        all.push_back(s);
+    };
+    clip_scene("m1.clip_inside", "segments inside the viewport are kept unchanged",
+               "If both outcodes are 0, accept at once and leave the points alone.",
+               {line({15, 20}, {50, 45}, yellow), line({48.7, 14.1}, {12.2, 40.9}, cyan),
+                line({10.25, 30}, {53.5, 30}, green),    // on the left and right borders
+                line({30, 12.75}, {30, 50}, magenta)});  // on the top and bottom borders
+    clip_scene("m1.clip_outside", "segments outside the viewport are rejected",
+               "Reject when the outcodes share a bit. A segment can also miss the viewport "
+               "with no shared bit (it cuts a corner region): clip and test again.",
+               {line({1, 5}, {8, 60}), line({2, 4}, {60, 9}), line({56, 2}, {62, 63}),
+                line({3, 55}, {63, 60}),
+                line({2, 30}, {40, 3}),                  // passes outside the top-left corner
+                line({20, 25}, {40, 35}, yellow)});      // inside, so doing nothing fails
+    clip_scene("m1.clip_one_edge", "one endpoint inside, one beyond one edge",
+               "Move the outside endpoint onto the edge its outcode names: for the left edge "
+               "x = xmin and y = a.y + t * (b.y - a.y) with t = (xmin - a.x) / (b.x - a.x).",
+               {line({30, 30}, {2, 20}, yellow), line({30, 30}, {62, 37}, cyan),
+                line({30, 30}, {24, 3}, magenta), line({30, 30}, {40, 62}, green)});
+    clip_scene("m1.clip_two_edges", "both endpoints outside, the segment crosses the viewport",
+               "Both endpoints need moving; after moving one, recompute its outcode and loop.",
+               {line({2, 20}, {62, 40}, yellow), line({25, 2}, {45, 62}, cyan),
+                line({1, 3}, {63, 61}, magenta), line({3, 44}, {36, 63}, green),
+                line({60, 3}, {55, 62}, red)});
+    {
+        Scene s;
+        s.id = "m1.viewport";
+        s.title = "lines clipped against a viewport (demo)";
+        s.hint = "Gray is each whole line, color is what clip_line kept: color must stay inside "
+                 "the blue viewport and cover the gray everywhere inside it.";
+        s.width = s.height = 96;
+        s.kind = Kind::kClip;
+        s.viewport = {20.5, 24.5, 75.5, 71.5};
+        s.demo = true;
+        const Color palette[] = {white, yellow, cyan, magenta, green, red};
+        for (int k = 0; k < 12; ++k) {
+            const double a0 = k * 0.53, a1 = a0 + 2.2 + 0.15 * k;
+            s.lines.push_back(line({48 + 46 * std::cos(a0), 48 + 46 * std::sin(a0)},
+                                   {48 + 46 * std::cos(a1), 48 + 46 * std::sin(a1)},
+                                   palette[k % 6]));
+        }
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.aa_shallow";
+        s.title = "Wu anti-aliased shallow lines";
+        s.hint = "In each column the pixel whose center is nearer the line gets the larger "
+                 "coverage (1 - f), the other gets f; the two add up to full intensity.";
+        s.disjoint = true;
+        s.lines = {aa_line({2.5, 4.2}, {61.5, 12.9}), aa_line({60.2, 21.3}, {3.1, 20.6}),
+                   aa_line({2.0, 30.0}, {61.0, 52.0})};
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.aa_steep";
+        s.title = "Wu anti-aliased steep lines";
+        s.hint = "For steep lines swap the roles of x and y: step along y and split coverage "
+                 "between two horizontally adjacent pixels.";
+        s.disjoint = true;
+        s.lines = {aa_line({4.2, 2.5}, {12.9, 61.5}), aa_line({21.3, 60.2}, {20.6, 3.1}),
+                   aa_line({30.0, 2.0}, {52.0, 61.0})};
+        all.push_back(s);
+    }
+
+    // ---- extreme inputs: each is paired with ordinary lines, so doing nothing fails ----
+    {
+        Scene s;
+        s.id = "m1.extreme_huge";
+        s.title = "endpoints at +/-1e9 and +/-1e300";
+        s.hint = "Clip in double before converting anything to int: 1e9 fits an int but "
+                 "2 * dx does not, and 1e300 fits nothing. Loop over visible pixels only.";
+        s.lines = {line({-1e9, 20.5}, {1e9, 20.5}), line({-1e9, -1e9}, {1e9, 1e9}, yellow),
+                   line({1e300, 40.5}, {-1e300, 44.5}, cyan),
+                   line({-1e9, -5}, {1e9, -5}, red),  // entirely above the image
+                   aa_line({-1e9, 52.25}, {1e9, 52.25}, magenta),
+                   aa_line({-1e300, 58.7}, {1e300, 58.7}, green),
+                   line(px(30, 2), px(60, 12), white)};
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.extreme_zero_length";
+        s.title = "zero-length lines draw exactly one pixel";
+        s.hint = "When a and b are in the same pixel, dx = dy = 0: draw that pixel once and "
+                 "stop; no division by the length.";
+        s.width = s.height = 32;
+        s.disjoint = true;
+        s.lines = {line(px(5, 5), px(5, 5)),          line({0.2, 0.7}, {0.9, 0.1}, yellow),
+                   line({31.9, 31.9}, {31.1, 31.2}, cyan), line({16, 16}, {16, 16}, magenta),
+                   line({-3, -3}, {-3, -3}, red),     // outside: nothing
+                   aa_line(px(10, 24), px(10, 24), green)};
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.extreme_nonfinite";
+        s.title = "NaN and infinite endpoints draw nothing";
+        s.hint = "Test std::isfinite on both endpoints first: NaN compares false with "
+                 "everything, so it slips through range checks, and int(NaN) is undefined.";
+        s.width = s.height = 32;
+        s.lines = {line({kNaN, 5}, {20, 20}, red),        line({5, 5}, {kInf, 5}, red),
+                   line({-kInf, -kInf}, {kInf, kInf}, red), line({kNaN, kNaN}, {kNaN, kNaN}, red),
+                   aa_line({3, 3}, {kNaN, 30}, red),        aa_line({-kInf, 9}, {kInf, 9}, red),
+                   line(px(2, 28), px(29, 16), white),      aa_line({2.5, 20.3}, {29.5, 24.8}, yellow)};
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.image_border";
+        s.title = "lines along the image border";
+        s.hint = "The first and last rows and columns are inside the image: clip to "
+                 "0 <= x <= width - 1, not width - 2, and keep lines that lie on the border.";
+        s.width = 48;
+        s.height = 32;
+        s.lines = {line(px(0, 0), px(47, 0)), line(px(47, 31), px(0, 31), yellow),
+                   line({0.5, -10}, {0.5, 40}, cyan), line({47.9, 40}, {47.2, -3}, magenta),
+                   line(px(10, 10), px(30, 20), green)};
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.extreme_long_shallow";
+        s.title = "very long, nearly horizontal lines";
+        s.hint = "Keep the error term in integers: a float slope added 1000 times drifts. "
+                 "Lines a billion pixels long must be clipped first, not walked.";
+        s.width = 1024;
+        s.height = 48;
+        s.disjoint = true;
+        s.lines = {line(px(0, 4), px(1023, 5)), line(px(1023, 10), px(0, 13), yellow),
+                   line(px(0, 18), px(1023, 25), cyan), line({-1e9, 33.5}, {1e9, 34.5}, magenta),
+                   aa_line({0.5, 40.3}, {1023.5, 42.7}, green)};
+        all.push_back(s);
+    }
+    return all;
+}
+
+}  // namespace
+
+const std::vector<Scene>& scenes() {
+    static const std::vector<Scene> all = make_scenes();
+    return all;
+}
+
+const Scene& scene(const std::string& id) {
+    for (const Scene& s : scenes()) {
+        if (s.id == id) return s;
+    }
+    throw std::out_of_range("no milestone-1 scene named " + id);
+}
+
+Color outcode_color(int code) {
+    // Inside is white; each side has a hue and the corners mix their two sides.
+    switch (code) {
+        case 0: return white;
+        case 1: return {200, 40, 40};    // left
+        case 2: return {40, 160, 40};    // right
+        case 4: return {40, 80, 220};    // top
+        case 8: return {220, 180, 30};   // bottom
+        case 5: return {150, 50, 170};   // left + top
+        case 9: return {230, 110, 30};   // left + bottom
+        case 6: return {30, 150, 170};   // right + top
+        case 10: return {120, 170, 40};  // right + bottom
+        default: return black;
+    }
+}
+
+}  // namespace m1cp

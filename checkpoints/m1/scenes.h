@@ -1,0 +1,59 @@
+// Milestone 1 scenes: the trusted description of every checkpoint and demo picture.
+//
+// A scene is plain data. The render half (render.cpp) turns it into calls to the code under
+// test; the judge (judge.cpp) derives from the same data what a correct image must contain.
+// The demo program and the gallery draw the scenes marked `demo`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "raster/color.h"
+#include "raster/vec.h"
+
+namespace m1cp {
+
+using raster::Color;
+using raster::Vec2;
+
+struct Segment {
+    Vec2 a, b;
+    Color color = raster::colors::white;
+    bool aa = false;  // draw with draw_line_aa instead of draw_line
+};
+
+struct Box {  // a clip rectangle, border included
+    double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+};
+
+enum class Kind {
+    kLines,     // draw every segment; judge pixels against the ideal lines
+    kOutcodes,  // color every pixel by outcode(pixel center, viewport)
+    kClip,      // clip every segment to the viewport with clip_line, then draw the result
+};
+
+struct Scene {
+    std::string id;
+    std::string title;
+    std::string hint;  // the most likely reason for a failure, in a student's words
+    int width = 64, height = 64;
+    Kind kind = Kind::kLines;
+    std::vector<Segment> lines;
+    bool check_reversed = false;  // also draw each line from b to a: the image must not change
+    bool disjoint = false;        // no two lines share a pixel: exact per-line checks apply
+    Box viewport;                 // kOutcodes and kClip
+    bool demo = false;            // shown in the gallery and drawn by the demo program
+};
+
+const std::vector<Scene>& scenes();
+const Scene& scene(const std::string& id);  // throws std::out_of_range for an unknown id
+
+// Colors of the outcode picture, indexed by outcode (0..10; unused codes are black).
+Color outcode_color(int code);
+
+// In clip scenes: each whole segment is drawn in this color first, then the viewport's
+// border, then the clipped part in the segment's own color on top.
+inline constexpr Color kUnclippedColor{70, 70, 70};
+inline constexpr Color kViewportColor{40, 90, 200};
+
+}  // namespace m1cp

@@ -1,0 +1,111 @@
+// The reference tool, for maintainers (and the README's first command):
+//
+//   reference_tool expected       render every checkpoint scene with the reference solution
+//                                 and write checkpoints/expected/<milestone>/<id>.png
+//   reference_tool verify         check the stored expected images against a fresh render
+//   reference_tool gallery <dir>  render every milestone's demo scenes into <dir>, printing
+//                                 each scene's error against its expected image and its time
+//
+// Expected images come only from here: never edit them by hand.
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "harness/checkpoint.h"
+#include "harness/showcase.h"
+#include "m1/render.h"
+#include "m1/scenes.h"
+#include "raster/compare.h"
+#include "raster/io.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Entry {
+    std::string milestone, id, title;
+    bool demo;
+    cp::Artifacts (*render)(const std::string&);
+};
+
+// Every milestone's scenes. Add a milestone here when its scenes exist.
+std::vector<Entry> all_scenes() {
+    std::vector<Entry> out;
+    for (const m1cp::Scene& s : m1cp::scenes()) out.push_back({"m1", s.id, s.title, s.demo, m1cp::reference::render});
+    return out;
+}
+
+int write_expected() {
+    int written = 0;
+    for (const Entry& e : all_scenes()) {
+        const std::string path = cp::expected_png_path(e.milestone, e.id);
+        fs::create_directories(fs::path(path).parent_path());
+        raster::write_png(path, e.render(e.id).images.at("main"));
+        ++written;
+    }
+    std::cout << "wrote " << written << " expected images\n";
+    return 0;
+}
+
+int verify() {
+    // The reference must reproduce every stored image. Aliased scenes use integer arithmetic
+    // and match exactly; anti-aliased ones may move a channel by one level between compilers
+    // (FMA contraction, -O0 vs -O3), which is allowed here and nowhere else.
+    int bad = 0;
+    for (const Entry& e : all_scenes()) {
+        const std::string path = cp::expected_png_path(e.milestone, e.id);
+        try {
+            const raster::ImageMetrics m = raster::compare(e.render(e.id).images.at("main"), raster::read_png(path));
+            if (!m.same_size || m.max_channel_diff > 1) {
+                std::cout << "MISMATCH " << e.id << ": " << m.differing_pixels << " pixels differ, max "
+                          << m.max_channel_diff << "\n";
+                ++bad;
+            }
+        } catch (const std::exception& ex) {
+            std::cout << "MISSING " << e.id << ": " << ex.what() << "\n";
+            ++bad;
+        }
+    }
+    // Stale files: an expected image whose scene no longer exists.
+    for (const auto& dir : fs::directory_iterator(fs::path(cp::expected_png_path("m1", "x")).parent_path().parent_path())) {
+        for (const auto& f : fs::directory_iterator(dir)) {
+            bool known = false;
+            for (const Entry& e : all_scenes()) known |= fs::equivalent(f.path(), cp::expected_png_path(e.milestone, e.id));
+            if (!known) {
+                std::cout << "STALE " << f.path().string() << ": no scene renders it\n";
+                ++bad;
+            }
+        }
+    }
+    if (bad > 0) {
+        std::cout << bad << " problem(s); if the reference changed on purpose, run `make expected`\n";
+        return 1;
+    }
+    std::cout << "all " << all_scenes().size() << " expected images reproduced\n";
+    return 0;
+}
+
+int gallery(const std::string& dir) {
+    std::vector<cp::ShowItem> items;
+    for (const Entry& e : all_scenes()) {
+        if (e.demo) items.push_back({e.milestone, e.id, e.title, e.render});
+    }
+    return cp::showcase(items, dir, "Reference gallery: every milestone's demo scenes");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    try {
+        if (args.size() == 1 && args[0] == "expected") return write_expected();
+        if (args.size() == 1 && args[0] == "verify") return verify();
+        if (args.size() == 2 && args[0] == "gallery") return gallery(args[1]);
+    } catch (const std::exception& e) {
+        std::cerr << "reference_tool: " << e.what() << "\n";
+        return 1;
+    }
+    std::cerr << "usage: reference_tool expected | verify | gallery <dir>\n";
+    return 2;
+}

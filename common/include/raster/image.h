@@ -1,0 +1,71 @@
+// The image every milestone draws into.
+//
+// Conventions (the same in every lesson):
+// - Pixel (x, y) is column x, row y. Row 0 is the TOP row; y grows downward, x to the right.
+// - Pixel (x, y) covers the square [x, x+1) x [y, y+1) of the continuous image plane, so its
+//   center is at (x + 0.5, y + 0.5). An image of width W spans 0 <= x < W.
+// - Storage is row-major RGB, 3 bytes per pixel, no padding: the byte of channel c of pixel
+//   (x, y) is data()[3 * (y * width + x) + c].
+//
+// Writing outside the image is never undefined behaviour: set() and blend() ignore such writes
+// and count them (stray_writes()). A correct rasterizer clips first and never makes one; the
+// checkpoints report the count, because a stray write is how "forgot to clip" shows up.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "raster/color.h"
+
+namespace raster {
+
+class Image {
+public:
+    // Largest accepted side, so that width * height * 3 never overflows and a typo in a scene
+    // fails with a message instead of an allocation of many gigabytes.
+    static constexpr int kMaxSide = 16384;
+
+    Image() = default;
+    // Throws std::invalid_argument unless 1 <= width, height <= kMaxSide.
+    Image(int width, int height, Color background = colors::black);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    bool empty() const { return width_ == 0; }
+    bool in_bounds(int x, int y) const { return x >= 0 && y >= 0 && x < width_ && y < height_; }
+
+    // Pixel read; throws std::out_of_range outside the image (reads are the harness's, and a
+    // bad read there is a bug in the harness, not in a student's rasterizer).
+    Color at(int x, int y) const;
+
+    // Pixel write. Outside the image: ignored and counted in stray_writes().
+    void set(int x, int y, Color c);
+
+    // Linear blend of c over the current pixel: new = old + coverage * (c - old), rounded to
+    // nearest; coverage is clamped to [0, 1] and NaN counts as 0. Outside: ignored and counted.
+    void blend(int x, int y, Color c, double coverage);
+
+    void fill(Color c);
+
+    long long stray_writes() const { return stray_writes_; }
+
+    const std::uint8_t* data() const { return bytes_.data(); }
+    std::uint8_t* data() { return bytes_.data(); }
+    std::size_t size_bytes() const { return bytes_.size(); }
+
+private:
+    std::size_t offset(int x, int y) const {
+        return 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+                    static_cast<std::size_t>(x));
+    }
+
+    int width_ = 0;
+    int height_ = 0;
+    std::vector<std::uint8_t> bytes_;
+    long long stray_writes_ = 0;
+};
+
+bool operator==(const Image& a, const Image& b);  // same size and same pixels
+
+}  // namespace raster

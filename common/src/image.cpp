@@ -1,0 +1,63 @@
+#include "raster/image.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace raster {
+
+Image::Image(int width, int height, Color background) {
+    if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide) {
+        throw std::invalid_argument("Image size " + std::to_string(width) + "x" +
+                                    std::to_string(height) + " is outside 1.." +
+                                    std::to_string(kMaxSide));
+    }
+    width_ = width;
+    height_ = height;
+    bytes_.resize(3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    fill(background);
+}
+
+Color Image::at(int x, int y) const {
+    if (!in_bounds(x, y)) {
+        throw std::out_of_range("Image::at(" + std::to_string(x) + ", " + std::to_string(y) +
+                                ") outside " + std::to_string(width_) + "x" +
+                                std::to_string(height_));
+    }
+    const std::uint8_t* p = &bytes_[offset(x, y)];
+    return {p[0], p[1], p[2]};
+}
+
+void Image::set(int x, int y, Color c) {
+    if (!in_bounds(x, y)) {
+        ++stray_writes_;
+        return;
+    }
+    std::uint8_t* p = &bytes_[offset(x, y)];
+    p[0] = c.r;
+    p[1] = c.g;
+    p[2] = c.b;
+}
+
+void Image::blend(int x, int y, Color c, double coverage) {
+    if (!in_bounds(x, y)) {
+        ++stray_writes_;
+        return;
+    }
+    set(x, y, mix(at(x, y), c, coverage));
+}
+
+void Image::fill(Color c) {
+    for (std::size_t i = 0; i < bytes_.size(); i += 3) {
+        bytes_[i] = c.r;
+        bytes_[i + 1] = c.g;
+        bytes_[i + 2] = c.b;
+    }
+}
+
+bool operator==(const Image& a, const Image& b) {
+    return a.width() == b.width() && a.height() == b.height() &&
+           std::equal(a.data(), a.data() + a.size_bytes(), b.data());
+}
+
+}  // namespace raster

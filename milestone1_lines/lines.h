@@ -1,0 +1,78 @@
+// Milestone 1: lines. The functions you implement in lines.cpp.
+//
+// Conventions (the checkpoints test every one of them):
+//
+//  * Pixel grid. Pixel (x, y) is column x, row y; row 0 is the top row and y grows downward.
+//    The pixel covers the square [x, x+1) x [y, y+1), so its center is (x + 0.5, y + 0.5).
+//
+//  * Endpoints. A line's endpoints are real points. Each endpoint selects the pixel that
+//    contains it: (floor(p.x), floor(p.y)). The drawn line joins the CENTERS of those two
+//    pixels. So (10.5, 20.5), (10.0, 20.0) and (10.99, 20.99) all mean pixel (10, 20).
+//
+//  * Aliased lines (draw_line). Both endpoint pixels are drawn. Along the major axis (x when
+//    |dx| >= |dy|, else y) exactly one pixel is drawn per step: the one whose center is
+//    nearest to the ideal line in the minor axis. When the ideal line passes exactly halfway
+//    between two pixels (a tie), either may be chosen, but drawing from a to b must give the
+//    same pixels as drawing from b to a. A zero-length line draws its single pixel.
+//
+//  * Clipping. Lines may start and end anywhere, up to about +/-1e300. Only pixels inside the
+//    image are ever written (Image::stray_writes() stays 0), and the work done is proportional
+//    to the number of visible pixels, never to the line's full length. Pixels of a clipped
+//    line stay within one pixel of the ideal line.
+//
+//  * Bad input. An endpoint that is NaN or infinite draws nothing (no crash, no hang).
+//
+//  * Anti-aliased lines (draw_line_aa), Xiaolin Wu's algorithm without endpoint weighting.
+//    Endpoints are used as given (no snapping). Let the major axis be x (swap the roles of x
+//    and y for steep lines). The line covers every column whose center x + 0.5 lies in
+//    [min(a.x, b.x), max(a.x, b.x)]. In such a column, let yc be the ideal line's y at
+//    x + 0.5, and t = yc - 0.5. The two pixels whose centers straddle yc, rows floor(t) and
+//    floor(t) + 1, receive coverage 1 - f and f, where f = t - floor(t). Coverage is applied
+//    with Image::blend, so the nearer pixel is the brighter one.
+//
+//  * Cohen-Sutherland outcodes. Bit LEFT: x < xmin; RIGHT: x > xmax; TOP: y < ymin (top of
+//    the screen, since y grows downward); BOTTOM: y > ymax. The rectangle is closed: points on
+//    its border are inside.
+#pragma once
+
+#include "raster/flavour.h"
+#include "raster/image.h"
+#include "raster/vec.h"
+
+namespace m1 {
+inline namespace RASTER_FLAVOUR {
+
+using raster::Color;
+using raster::Image;
+using raster::Vec2;
+
+// An axis-aligned clipping rectangle, border included: xmin <= x <= xmax, ymin <= y <= ymax.
+struct Rect {
+    double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+};
+
+enum Outcode : int {
+    kInside = 0,
+    kLeft = 1,
+    kRight = 2,
+    kTop = 4,
+    kBottom = 8,
+};
+
+// TODO 1: the Cohen-Sutherland region code of p with respect to r (an OR of Outcode bits).
+int outcode(Vec2 p, const Rect& r);
+
+// TODO 2: clips the segment a-b to r in place. Returns false, leaving a and b unspecified,
+// when no part of the segment lies in r; otherwise true, with a and b moved along the segment
+// onto r's border where they were outside. Non-finite input returns false.
+bool clip_line(Vec2& a, Vec2& b, const Rect& r);
+
+// TODO 3 and 4: Bresenham's line from the pixel containing a to the pixel containing b,
+// in all eight octants, with integer arithmetic only inside the loop. Clipped to the image.
+void draw_line(Image& img, Vec2 a, Vec2 b, Color c);
+
+// TODO 5: Xiaolin Wu's anti-aliased line, as pinned above. Clipped to the image.
+void draw_line_aa(Image& img, Vec2 a, Vec2 b, Color c);
+
+}  // namespace RASTER_FLAVOUR
+}  // namespace m1
