@@ -6,8 +6,9 @@
 //       indentation kept). Unclosed, nested or stray markers are errors with a line number.
 //
 //   srctool mutate <source.cpp> <bug-file> <out.cpp>
-//       A deliberately buggy implementation: the source with the bug file's find/replace
-//       blocks applied. Each `find` text must occur exactly once, so a bug whose code has
+//       A deliberately buggy implementation (a .bug file) or a correct variant (a .variant
+//       file, which may instead give only compiler flags): the source with the file's
+//       find/replace blocks applied. Each `find` text must occur exactly once, so a bug whose code has
 //       changed in the reference fails loudly instead of silently testing nothing. Solution
 //       markers are stripped from the output (their SKELETON lines dropped).
 //
@@ -47,15 +48,7 @@ std::string join(const std::vector<std::string>& lines) {
     return out;
 }
 
-void write_if_changed(const std::string& path, const std::string& text) {
-    {
-        std::ifstream in(path);
-        if (in) {
-            std::stringstream ss;
-            ss << in.rdbuf();
-            if (ss.str() == text) return;  // keep the timestamp: no needless rebuilds
-        }
-    }
+void write_file(const std::string& path, const std::string& text) {
     std::ofstream out(path);
     if (!out) throw std::runtime_error("cannot write " + path);
     out << text;
@@ -139,7 +132,11 @@ std::string mutate(const std::string& source, const std::string& bug_path) {
             replace.push_back(l);
         }
     }
-    if (blocks == 0) throw std::runtime_error(bug_path + ": no @@ find / @@ replace / @@ end block");
+    bool has_flags = false;
+    for (const auto& l : bug) has_flags |= l.rfind("flags:", 0) == 0;
+    if (blocks == 0 && !has_flags) {
+        throw std::runtime_error(bug_path + ": no @@ find / @@ replace / @@ end block (and no flags: line)");
+    }
     return "// GENERATED: " + source + " with the bug " + bug_path + " applied.\n" + text;
 }
 
@@ -149,11 +146,11 @@ int main(int argc, char** argv) {
     try {
         const std::vector<std::string> args(argv + 1, argv + argc);
         if (args.size() == 3 && args[0] == "skeleton") {
-            write_if_changed(args[2], skeleton_of(args[1]));
+            write_file(args[2], skeleton_of(args[1]));
             return 0;
         }
         if (args.size() == 4 && args[0] == "mutate") {
-            write_if_changed(args[3], mutate(args[1], args[2]));
+            write_file(args[3], mutate(args[1], args[2]));
             return 0;
         }
         if (args.size() == 3 && args[0] == "check") {

@@ -31,6 +31,12 @@ struct Artifacts {
     double seconds = 0;          // render time of the implementation (best of a few runs)
 };
 
+// Render halves give every image this stray-write budget (Image::limit_stray_writes) and,
+// when a loop runs past its end and spends it, set values[kRunawayKey] = 1 and keep the
+// partial picture; the harness turns that into a finding instead of a hang.
+inline constexpr long long kStrayWriteBudget = 1'000'000;
+inline constexpr const char* kRunawayKey = "runaway";
+
 // How strictly the main image must match the expected PNG. Pixels outside `lenient` must
 // match to within strict_channel_diff levels; pixels inside it may differ, but at most
 // max_lenient_diffs of them. `why` says why this policy is fair; it is printed on failure.

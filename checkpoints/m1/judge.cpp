@@ -285,14 +285,29 @@ struct Checker {
     }
 
     void check_plan(const Plan& plan) {
+        // Missing pixels. Only endpoints missing: the loop bounds. More than that: the line
+        // runs in the wrong direction or on the wrong axis for its octant.
+        std::vector<Pix> missing;
+        bool only_endpoints = true;
         for (Pix p : plan.required) {
-            if (!lit(img, p)) {
-                const bool is_end = (p.x == plan.p0.x && p.y == plan.p0.y) || (p.x == plan.p1.x && p.y == plan.p1.y);
-                add(is_end ? "endpoint" : "octant",
-                    plan.name + ": pixel " + str(p) +
-                        (is_end ? " is an endpoint and must be drawn" : " is the nearest to the line in its column but is not drawn"));
-                return;  // one message per line is enough
-            }
+            if (lit(img, p)) continue;
+            missing.push_back(p);
+            only_endpoints &= (p.x == plan.p0.x && p.y == plan.p0.y) || (p.x == plan.p1.x && p.y == plan.p1.y);
+        }
+        if (!missing.empty() && only_endpoints) {
+            add("endpoint", plan.name + ": endpoint pixel " + str(missing.front()) + " is not drawn; both endpoints belong to the line");
+            return;
+        }
+        if (!missing.empty() && missing.size() == plan.required.size()) {
+            add("octant", plan.name + ": the line is not drawn at all");
+            return;
+        }
+        if (!missing.empty()) {
+            add("octant", plan.name + ": " + std::to_string(missing.size()) + " of its " +
+                              std::to_string(plan.required.size()) + " certain pixels are missing, e.g. " +
+                              str(missing[missing.size() / 2]) +
+                              " (the pixel nearest the ideal line at that step)");
+            return;
         }
         for (const auto& [a, b] : plan.ties) {
             if (!lit(img, a) && !lit(img, b)) {

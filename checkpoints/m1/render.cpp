@@ -22,21 +22,14 @@ void draw(raster::Image& img, const Segment& s, bool reversed) {
     }
 }
 
-}  // namespace
-
-cp::Artifacts render(const std::string& id) {
-    const Scene& s = scene(id);
-    cp::Artifacts out;
-    raster::Image img(s.width, s.height);
-
+void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
     switch (s.kind) {
         case Kind::kLines:
             for (const Segment& seg : s.lines) draw(img, seg, false);
             if (s.check_reversed) {
-                raster::Image rev(s.width, s.height);
+                raster::Image& rev = out.images["reversed"] = raster::Image(s.width, s.height);
+                rev.limit_stray_writes(cp::kStrayWriteBudget);
                 for (const Segment& seg : s.lines) draw(rev, seg, true);
-                out.stray_writes += rev.stray_writes();
-                out.images["reversed"] = rev;
             }
             break;
         case Kind::kOutcodes: {
@@ -68,6 +61,21 @@ cp::Artifacts render(const std::string& id) {
             break;
         }
     }
+}
+
+}  // namespace
+
+cp::Artifacts render(const std::string& id) {
+    const Scene& s = scene(id);
+    cp::Artifacts out;
+    raster::Image img(s.width, s.height);
+    img.limit_stray_writes(cp::kStrayWriteBudget);
+    try {
+        draw_scene(s, img, out);
+    } catch (const raster::StrayWriteLimit&) {
+        out.values[cp::kRunawayKey] = 1;  // keep what was drawn: the picture shows where
+    }
+    for (const auto& [name, extra] : out.images) out.stray_writes += extra.stray_writes();
     out.stray_writes += img.stray_writes();
     out.images["main"] = std::move(img);
     return out;

@@ -30,7 +30,7 @@ Color Image::at(int x, int y) const {
 
 void Image::set(int x, int y, Color c) {
     if (!in_bounds(x, y)) {
-        ++stray_writes_;
+        count_stray_write();
         return;
     }
     std::uint8_t* p = &bytes_[offset(x, y)];
@@ -41,10 +41,17 @@ void Image::set(int x, int y, Color c) {
 
 void Image::blend(int x, int y, Color c, double coverage) {
     if (!in_bounds(x, y)) {
-        ++stray_writes_;
+        count_stray_write();
         return;
     }
     set(x, y, mix(at(x, y), c, coverage));
+}
+
+void Image::count_stray_write() {
+    if (++stray_writes_ > stray_limit_) {
+        throw StrayWriteLimit("more than " + std::to_string(stray_limit_) +
+                              " writes outside the image: a loop is running past its end");
+    }
 }
 
 void Image::fill(Color c) {

@@ -10,15 +10,25 @@
 // Writing outside the image is never undefined behaviour: set() and blend() ignore such writes
 // and count them (stray_writes()). A correct rasterizer clips first and never makes one; the
 // checkpoints report the count, because a stray write is how "forgot to clip" shows up.
+// The checkpoints also set a stray-write budget (limit_stray_writes): a loop that runs past
+// its end writes outside the image forever, and the budget stops it with StrayWriteLimit
+// instead of letting it hang.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "raster/color.h"
 
 namespace raster {
+
+// Thrown by set() and blend() once an image's stray-write budget is spent.
+struct StrayWriteLimit : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 class Image {
 public:
@@ -49,6 +59,8 @@ public:
     void fill(Color c);
 
     long long stray_writes() const { return stray_writes_; }
+    // After `limit` stray writes, the next one throws StrayWriteLimit (default: no limit).
+    void limit_stray_writes(long long limit) { stray_limit_ = limit; }
 
     const std::uint8_t* data() const { return bytes_.data(); }
     std::uint8_t* data() { return bytes_.data(); }
@@ -63,7 +75,10 @@ private:
     int width_ = 0;
     int height_ = 0;
     std::vector<std::uint8_t> bytes_;
+    void count_stray_write();
+
     long long stray_writes_ = 0;
+    long long stray_limit_ = std::numeric_limits<long long>::max();
 };
 
 bool operator==(const Image& a, const Image& b);  // same size and same pixels
