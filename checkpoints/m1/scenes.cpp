@@ -166,7 +166,7 @@ std::vector<Scene> make_scenes() {
                                    {64 + 60 * dir.x, 64 + 60 * dir.y}, k % 2 == 0 ? white : gray));
         }
         s.lines.push_back(line({64, 64}, {64 + 24 * std::cos(-1.2), 64 + 24 * std::sin(-1.2)}, yellow));
-        s.lines.push_back(line({64, 64}, {64 + 40 * std::cos(0.5), 64 + 40 * std::sin(0.5)}, cyan));
+        s.lines.push_back(line({64, 64}, {64 + 40 * std::cos(0.65), 64 + 40 * std::sin(0.65)}, cyan));
         all.push_back(s);
     }
     {
