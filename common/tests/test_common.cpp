@@ -1,5 +1,4 @@
 // Unit tests of the shared library: what every milestone and the checkpoints rely on.
-#define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
 #include <cmath>

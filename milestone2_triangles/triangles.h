@@ -1,0 +1,100 @@
+// Milestone 2: triangles. The functions you implement in triangles.cpp.
+//
+// Conventions (the checkpoints test every one of them):
+//
+//  * Pixel grid: as in milestone 1. Pixel (x, y) covers [x, x+1) x [y, y+1), row 0 at the
+//    top, y growing downward; its center is (x + 0.5, y + 0.5). Vertices are real points in
+//    that plane, in pixels.
+//
+//  * Sampling. A pixel is covered when its CENTER is inside the triangle (anti-aliased fills
+//    use several sample points per pixel instead, see fill_triangle_aa).
+//
+//  * Edge functions. For an edge from a to b, edge(a, b, p) = cross(b - a, p - a)
+//    = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x). With y growing downward, it is
+//    positive when p lies to the right of the edge as you walk from a to b on screen, and its
+//    value at the third vertex is twice the triangle's signed area.
+//
+//  * Winding. Both windings are drawn and give identical pixels. A triangle whose signed area
+//    is negative is first made positive by swapping two vertices; from then on p is inside
+//    when all three edge functions are >= 0, with the fill rule deciding the zeros.
+//
+//  * Fill rule: top-left. A sample exactly on an edge is covered only if the edge is a TOP
+//    edge (exactly horizontal, with the triangle below it) or a LEFT edge (the triangle to its
+//    right). With positive area, edge a->b is top when b.y == a.y and b.x > a.x, and left when
+//    b.y < a.y. Two triangles sharing an edge therefore never both cover, nor both miss, a
+//    sample on it: a mesh is watertight.
+//
+//  * Precision. Vertices are snapped to 1/16 of a pixel (kSubpixelSteps) and edge functions
+//    are evaluated exactly in 64-bit integers on that grid; see the lesson for why plain float
+//    fails far from the origin. A correct implementation in double without snapping also
+//    passes: the checkpoints treat samples within a small distance of an edge as ambiguous,
+//    except in scenes whose vertices already lie on the 1/16 grid.
+//
+//  * Range and bad input. Triangles with a NaN or infinite coordinate, with |coordinate| >
+//    kMaxCoordinate, or with zero area (collinear or coincident vertices) draw nothing and
+//    never divide by zero. Work is proportional to the pixels inside the image: the bounding
+//    box is clamped to the image before any loop starts.
+//
+//  * Barycentric coordinates. l0 = edge(v1, v2, p) / area2, l1 = edge(v2, v0, p) / area2,
+//    l2 = edge(v0, v1, p) / area2, where area2 = edge(v0, v1, v2): each is 1 at its own vertex
+//    and 0 on the opposite edge, and they sum to 1. A per-vertex color interpolates as
+//    l0 * c0 + l1 * c1 + l2 * c2 per channel, rounded to the nearest level.
+//
+//  * Anti-aliasing by supersampling. fill_triangle_aa takes n*n samples per pixel on a
+//    regular grid, at (x + (i + 0.5) / n, y + (j + 0.5) / n) for i, j in 0..n-1, applies the
+//    same coverage test and fill rule to each, and blends the color over the pixel with
+//    coverage = covered samples / (n * n). n = 1 is the plain fill.
+#pragma once
+
+#include <cstdint>
+
+#include "raster/flavour.h"
+#include "raster/image.h"
+#include "raster/vec.h"
+
+namespace m2 {
+inline namespace RASTER_FLAVOUR {
+
+using raster::Color;
+using raster::Image;
+using raster::Vec2;
+
+inline constexpr int kSubpixelSteps = 16;           // snapping grid: 1/16 pixel
+inline constexpr double kMaxCoordinate = 1 << 24;  // about 16.7 million pixels
+
+// A vertex snapped to the 1/16-pixel grid: x = X / 16 pixels.
+struct Fixed {
+    std::int64_t x = 0, y = 0;
+};
+
+// TODO 1: snap p to the nearest point of the 1/16 grid. Returns false (leaving `out` alone)
+// when p is not finite or lies beyond +/-kMaxCoordinate.
+bool snap(Vec2 p, Fixed& out);
+
+// TODO 2: the edge function on the fixed grid, exactly, in units of (1/16 pixel)^2.
+std::int64_t edge(Fixed a, Fixed b, Fixed p);
+
+// Pixels [x0, x1) x [y0, y1); empty when x0 >= x1 or y0 >= y1.
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+// TODO 3: the pixels whose centers can be inside the triangle, clamped to the image:
+// every pixel whose center lies within the triangle's bounding box, and no pixel outside the
+// image. Must not overflow for coordinates up to kMaxCoordinate.
+PixelRect bounding_box(Fixed v0, Fixed v1, Fixed v2, int width, int height);
+
+// TODO 4: fills the triangle in one color: snap, orient, bounding box, then test every pixel
+// center with the three edge functions and the top-left rule.
+void fill_triangle(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c);
+
+// TODO 5: like fill_triangle, but each covered pixel gets the barycentric interpolation of
+// the three vertex colors.
+void fill_triangle_gradient(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c0, Color c1, Color c2);
+
+// TODO 6: supersampling anti-aliasing with n * n samples per pixel (n from 1 to 16; other
+// values draw nothing).
+void fill_triangle_aa(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c, int n);
+
+}  // namespace RASTER_FLAVOUR
+}  // namespace m2
