@@ -16,6 +16,8 @@
 #include "harness/showcase.h"
 #include "m1/render.h"
 #include "m1/scenes.h"
+#include "m2/render.h"
+#include "m2/scenes.h"
 #include "raster/compare.h"
 #include "raster/io.h"
 
@@ -33,6 +35,7 @@ struct Entry {
 std::vector<Entry> all_scenes() {
     std::vector<Entry> out;
     for (const m1cp::Scene& s : m1cp::scenes()) out.push_back({"m1", s.id, s.title, s.demo, m1cp::reference::render});
+    for (const m2cp::Scene& s : m2cp::scenes()) out.push_back({"m2", s.id, s.title, s.demo, m2cp::reference::render});
     return out;
 }
 

@@ -26,9 +26,9 @@
 //
 //  * Precision. Vertices are snapped to 1/16 of a pixel (kSubpixelSteps) and edge functions
 //    are evaluated exactly in 64-bit integers on that grid; see the lesson for why plain float
-//    fails far from the origin. A correct implementation in double without snapping also
-//    passes: the checkpoints treat samples within a small distance of an edge as ambiguous,
-//    except in scenes whose vertices already lie on the 1/16 grid.
+//    fails far from the origin. Where scene vertices are not on the 1/16 grid, the
+//    checkpoints treat pixel centers very near an edge as ambiguous, so the exact snapping
+//    rule (nearest, ties away from zero) never decides a verdict on its own.
 //
 //  * Range and bad input. Triangles with a NaN or infinite coordinate, with |coordinate| >
 //    kMaxCoordinate, or with zero area (collinear or coincident vertices) draw nothing and
@@ -43,7 +43,8 @@
 //  * Anti-aliasing by supersampling. fill_triangle_aa takes n*n samples per pixel on a
 //    regular grid, at (x + (i + 0.5) / n, y + (j + 0.5) / n) for i, j in 0..n-1, applies the
 //    same coverage test and fill rule to each, and blends the color over the pixel with
-//    coverage = covered samples / (n * n). n = 1 is the plain fill.
+//    coverage = covered samples / (n * n). n is 1, 2, 4 or 8 (1, 4, 16 or 64 samples), so
+//    every sample is a point of the 1/16 grid; n = 1 is the plain fill.
 #pragma once
 
 #include <cstdint>
@@ -92,7 +93,7 @@ void fill_triangle(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c);
 // the three vertex colors.
 void fill_triangle_gradient(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c0, Color c1, Color c2);
 
-// TODO 6: supersampling anti-aliasing with n * n samples per pixel (n from 1 to 16; other
+// TODO 6: supersampling anti-aliasing with n * n samples per pixel (n = 1, 2, 4 or 8; other
 // values draw nothing).
 void fill_triangle_aa(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c, int n);
 

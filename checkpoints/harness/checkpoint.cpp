@@ -247,6 +247,8 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
     }
 
     std::cout << "checkpoint " << id << ": " << rec.title << "\n" << report.str();
+    rec.measures = judgement.measures;
+    for (const auto& [name, v] : judgement.measures) std::cout << "  " << name << ": " << v << "\n";
     std::cout << "  render time: yours " << std::fixed << std::setprecision(3) << rec.student_ms
               << " ms, reference " << rec.reference_ms << " ms\n";
     if (!findings.empty()) {

@@ -58,6 +58,9 @@ struct Finding {
 struct Judgement {
     std::vector<Finding> findings;  // empty: the properties hold
     Tolerance tolerance;            // the policy for comparing "main" with the expected PNG
+    // Numbers worth reporting beside the verdict (e.g. the coverage error against the exact
+    // area), printed with the checkpoint and kept in its record and the JSON summary.
+    std::map<std::string, double> measures;
 };
 
 // Everything the harness needs to know about one milestone's checkpoints.

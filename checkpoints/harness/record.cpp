@@ -48,6 +48,7 @@ void write_record(const Record& r) {
         << r.reference_ms << "\noutput_dir\t" << r.output_dir << "\n";
     put_metrics(out, "student.", r.student);
     put_metrics(out, "reference.", r.reference);
+    for (const auto& [name, v] : r.measures) out << "measure." << name << "\t" << v << "\n";
 }
 
 std::vector<Record> read_records(const std::string& dir) {
@@ -73,6 +74,7 @@ std::vector<Record> read_records(const std::string& dir) {
             else if (key == "output_dir") r.output_dir = v;
             else if (key.rfind("student.", 0) == 0) get_metric(r.student, key.substr(8), v);
             else if (key.rfind("reference.", 0) == 0) get_metric(r.reference, key.substr(10), v);
+            else if (key.rfind("measure.", 0) == 0) r.measures[key.substr(8)] = std::stod(v);
         }
         if (!r.id.empty()) records.push_back(r);
     }

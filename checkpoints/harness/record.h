@@ -3,6 +3,7 @@
 // file), read back by the summary tool that prints the error-against-time table.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ struct Record {
     raster::ImageMetrics student, reference;  // each against the expected image
     double student_ms = 0, reference_ms = 0;
     std::string output_dir;  // where the failure pictures are
+    std::map<std::string, double> measures;  // see Judgement::measures
 };
 
 void write_record(const Record& r);  // into $RASTER_RESULTS_DIR (default: checkpoint_results)

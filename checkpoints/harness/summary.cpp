@@ -85,7 +85,12 @@ int main(int argc, char** argv) {
              << ", \"reference_ms\": " << json_number(r.reference_ms)
              << ", \"student_error\": " << (r.has_metrics ? json_metrics(r.student) : "null")
              << ", \"reference_error\": " << (r.has_metrics ? json_metrics(r.reference) : "null")
-             << ", \"pictures\": \"" << json_escape(r.output_dir) << "\"}"
+             << ", \"measures\": {";
+        for (auto it = r.measures.begin(); it != r.measures.end(); ++it) {
+            json << (it == r.measures.begin() ? "" : ", ") << "\"" << json_escape(it->first)
+                 << "\": " << json_number(it->second);
+        }
+        json << "}, \"pictures\": \"" << json_escape(r.output_dir) << "\"}"
              << (i + 1 < records.size() ? "," : "") << "\n";
     }
     json << "  ],\n  \"passed\": " << passed << ",\n  \"failed\": " << failed

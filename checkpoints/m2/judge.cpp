@@ -1,0 +1,481 @@
+// Judge half of the milestone-2 checkpoints (trusted: it runs no code under test).
+//
+// Its oracle classifies a sample point against a triangle in one of two ways:
+//  * exact, when all vertices lie on the 1/16-pixel grid (as the scene gives them): 128-bit
+//    integer edge functions with the pinned top-left rule, so even samples exactly on an edge
+//    are decided, and checked strictly;
+//  * with a margin otherwise: a sample farther than kMargin from every edge line is certainly
+//    in or out, anything nearer is ambiguous (snapping to 1/16 moves an edge by at most
+//    0.045 pixel, so a correct implementation can decide those either way).
+#include "m2/judge.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "m2/scenes.h"
+
+namespace m2cp {
+
+namespace {
+
+using raster::Image;
+using raster::Mask;
+
+constexpr double kMargin = 1.0 / 16;
+constexpr double kMaxCoordinate = 1 << 24;  // as pinned in triangles.h
+using i128 = __int128;
+
+enum class Side { kIn, kOut, kAmbiguous };
+
+struct Verdict {
+    Side side = Side::kOut;
+    bool on_edge = false;  // exact mode: the sample is exactly on an edge (fill rule decided)
+};
+
+std::string str(Vec2 p) {
+    std::ostringstream s;
+    s << "(" << p.x << ", " << p.y << ")";
+    return s.str();
+}
+
+std::string str(Color c) {
+    return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")";
+}
+
+// A triangle as the judge sees it.
+class Shape {
+public:
+    explicit Shape(const Tri& t) {
+        for (int i = 0; i < 3; ++i) {
+            v_[i] = t.v[i];
+            drawable_ &= raster::is_finite(t.v[i]) && std::abs(t.v[i].x) <= kMaxCoordinate &&
+                         std::abs(t.v[i].y) <= kMaxCoordinate;
+        }
+        if (!drawable_) return;
+        exact_ = true;
+        for (int i = 0; i < 3; ++i) {
+            const double gx = t.v[i].x * 16, gy = t.v[i].y * 16;
+            exact_ &= gx == std::floor(gx) && gy == std::floor(gy);
+            g_[i][0] = static_cast<i128>(gx);
+            g_[i][1] = static_cast<i128>(gy);
+        }
+        if (exact_) {
+            const i128 area = cross(g_[0], g_[1], g_[2]);
+            drawable_ = area != 0;
+            sign_ = area > 0 ? 1 : -1;
+        } else {
+            const double area = (v_[1].x - v_[0].x) * (v_[2].y - v_[0].y) - (v_[1].y - v_[0].y) * (v_[2].x - v_[0].x);
+            sign_ = area >= 0 ? 1 : -1;
+        }
+    }
+
+    bool drawable() const { return drawable_; }
+    bool exact() const { return exact_; }
+
+    // p in pixels; in exact mode p must be on the 1/16 grid too (pixel centers and the
+    // supersampling positions for n = 1, 2, 4, 8 all are).
+    Verdict classify(Vec2 p) const {
+        if (!drawable_) return {Side::kOut, false};
+        if (exact_) {
+            const i128 q[2] = {static_cast<i128>(p.x * 16), static_cast<i128>(p.y * 16)};
+            bool on_edge = false;
+            for (int i = 0; i < 3; ++i) {
+                // Walk the edges in the order that makes the area positive.
+                const int a = sign_ > 0 ? i : (3 - i) % 3, b = sign_ > 0 ? (i + 1) % 3 : (2 - i + 3) % 3;
+                const i128 e = cross(g_[a], g_[b], q);
+                if (e == 0) {
+                    on_edge = true;
+                    // Top edge: horizontal, going right; left edge: going up (y decreasing).
+                    const i128 dy = g_[b][1] - g_[a][1], dx = g_[b][0] - g_[a][0];
+                    if (!((dy == 0 && dx > 0) || dy < 0)) return {Side::kOut, true};
+                } else if (e < 0) {
+                    return {Side::kOut, on_edge};
+                }
+            }
+            return {Side::kIn, on_edge};
+        }
+        double nearest = 1e300;
+        for (int i = 0; i < 3; ++i) {
+            const Vec2 a = v_[i], b = v_[(i + 1) % 3];
+            const double len = raster::length(b - a);
+            if (len == 0) return {Side::kAmbiguous, false};
+            nearest = std::min(nearest, sign_ * raster::cross(b - a, p - a) / len);
+        }
+        if (nearest > kMargin) return {Side::kIn, false};
+        if (nearest < -kMargin) return {Side::kOut, false};
+        return {Side::kAmbiguous, false};
+    }
+
+    // Barycentric weights of p (unsnapped geometry).
+    std::array<double, 3> weights(Vec2 p) const {
+        const double area = raster::cross(v_[1] - v_[0], v_[2] - v_[0]);
+        return {raster::cross(v_[2] - v_[1], p - v_[1]) / area, raster::cross(v_[0] - v_[2], p - v_[2]) / area,
+                raster::cross(v_[1] - v_[0], p - v_[0]) / area};
+    }
+
+    // Exact area of the triangle inside pixel (x, y): the triangle clipped to the pixel's
+    // square (Sutherland-Hodgman), then the shoelace formula.
+    double area_in_pixel(int x, int y) const {
+        if (!drawable_) return 0;
+        std::vector<Vec2> poly(v_, v_ + 3);
+        auto clip = [&](auto inside, auto cut) {
+            std::vector<Vec2> out;
+            for (std::size_t i = 0; i < poly.size(); ++i) {
+                const Vec2 a = poly[i], b = poly[(i + 1) % poly.size()];
+                if (inside(a)) out.push_back(a);
+                if (inside(a) != inside(b)) out.push_back(cut(a, b));
+            }
+            poly = out;
+        };
+        auto at_x = [](double x0) {
+            return [x0](Vec2 a, Vec2 b) { return Vec2{x0, a.y + (b.y - a.y) * (x0 - a.x) / (b.x - a.x)}; };
+        };
+        auto at_y = [](double y0) {
+            return [y0](Vec2 a, Vec2 b) { return Vec2{a.x + (b.x - a.x) * (y0 - a.y) / (b.y - a.y), y0}; };
+        };
+        clip([x](Vec2 p) { return p.x >= x; }, at_x(x));
+        clip([x](Vec2 p) { return p.x <= x + 1; }, at_x(x + 1));
+        clip([y](Vec2 p) { return p.y >= y; }, at_y(y));
+        clip([y](Vec2 p) { return p.y <= y + 1; }, at_y(y + 1));
+        double twice = 0;
+        for (std::size_t i = 0; i < poly.size(); ++i) twice += raster::cross(poly[i], poly[(i + 1) % poly.size()]);
+        return std::abs(twice) / 2;
+    }
+
+    std::string name() const { return "triangle " + str(v_[0]) + " " + str(v_[1]) + " " + str(v_[2]); }
+
+private:
+    static i128 cross(const i128 a[2], const i128 b[2], const i128 p[2]) {
+        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+    }
+
+    Vec2 v_[3];
+    i128 g_[3][2] = {};
+    bool drawable_ = true;
+    bool exact_ = false;
+    int sign_ = 1;
+};
+
+Color interpolate(const Tri& t, const std::array<double, 3>& w) {
+    auto ch = [&](auto member) {
+        return raster::to_channel(w[0] * (t.c[0].*member) + w[1] * (t.c[1].*member) + w[2] * (t.c[2].*member));
+    };
+    return {ch(&Color::r), ch(&Color::g), ch(&Color::b)};
+}
+
+bool near(Color a, Color b, int tol) {
+    return std::abs(a.r - b.r) <= tol && std::abs(a.g - b.g) <= tol && std::abs(a.b - b.b) <= tol;
+}
+
+// Collects up to a few example pixels of one kind of mistake into one finding.
+struct Tally {
+    Tally(std::string t, std::string w) : topic(std::move(t)), what(std::move(w)) {}
+    std::string topic, what;
+    long long count = 0;
+    std::string examples;
+    void add(int x, int y, const std::string& detail = "") {
+        if (count++ < 3) {
+            examples += (examples.empty() ? "" : "; ") + std::string("(") + std::to_string(x) + ", " +
+                        std::to_string(y) + ")" + detail;
+        }
+    }
+    void report(cp::Judgement& j) const {
+        if (count > 0) j.findings.push_back({topic, std::to_string(count) + " pixel(s) " + what + ", e.g. " + examples});
+    }
+};
+
+// Sample positions of fill_triangle_aa with n per axis, inside pixel (x, y).
+std::vector<Vec2> samples(int x, int y, int n) {
+    std::vector<Vec2> out;
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) out.push_back({x + (i + 0.5) / n, y + (j + 0.5) / n});
+    }
+    return out;
+}
+
+std::string generic_topic(const std::string& id) {
+    if (id == "m2.huge") return "precision";
+    if (id == "m2.degenerate") return "degenerate";
+    if (id == "m2.nonfinite") return "bad input";
+    return "coverage";
+}
+
+void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image& img, cp::Judgement& j) {
+    const std::string topic = generic_topic(s.id);
+    Tally missing{topic, "inside a triangle are not filled"};
+    Tally extra{topic, "outside every triangle are filled"};
+    Tally rule{"fill rule", "have their center exactly on an edge and are decided wrongly (top and left edges include "
+                            "such centers, bottom and right edges exclude them)"};
+    Tally last_row{"bounding box", "in the last row or column of a triangle's bounding box are missing"};
+    Tally colors{"barycentric", "have the wrong interpolated color"};
+    Tally aa_wrong{"supersampling", "have the wrong coverage for their number of covered samples"};
+    bool has_soft = false;
+
+    for (int y = 0; y < s.height; ++y) {
+        for (int x = 0; x < s.width; ++x) {
+            const Vec2 center{x + 0.5, y + 0.5};
+            Color want = raster::colors::black;
+            bool lenient = false, on_edge = false, in_last = false;
+            int tol = 0;
+            double lo = 0, hi = 0;  // coverage range for a pixel of one anti-aliased triangle
+            Color aa_color;
+            int aa_tris = 0, other_tris = 0;
+            for (std::size_t k = 0; k < s.tris.size(); ++k) {
+                const Tri& t = s.tris[k];
+                const Shape& shape = shapes[k];
+                if (t.aa > 0) {
+                    int in = 0, amb = 0;
+                    for (Vec2 p : samples(x, y, t.aa)) {
+                        const Side side = shape.classify(p).side;
+                        in += side == Side::kIn;
+                        amb += side == Side::kAmbiguous;
+                    }
+                    if (in + amb == 0) continue;
+                    ++aa_tris;
+                    const double n2 = t.aa * t.aa;
+                    lo = in / n2;
+                    hi = (in + amb) / n2;
+                    aa_color = t.c[0];
+                    if (amb > 0) lenient = true;
+                    want = raster::mix(want, t.c[0], lo);
+                    tol = std::max(tol, 1);
+                    has_soft = true;
+                    continue;
+                }
+                const Verdict v = shape.classify(center);
+                if (v.side == Side::kOut) continue;
+                ++other_tris;
+                if (v.side == Side::kAmbiguous) {
+                    lenient = true;
+                    continue;
+                }
+                on_edge = v.on_edge;
+                want = t.gradient ? interpolate(t, shape.weights(center)) : t.c[0];
+                if (t.gradient) {
+                    tol = 2;  // snapping moves a weight by < 0.001: under a level; rounding adds one
+                    has_soft = true;
+                }
+                // Is this pixel in the last row or column of the triangle's candidate pixels?
+                const double max_x = std::max({t.v[0].x, t.v[1].x, t.v[2].x}), max_y = std::max({t.v[0].y, t.v[1].y, t.v[2].y});
+                in_last = std::floor(max_x - 0.5) == x || std::floor(max_y - 0.5) == y;
+            }
+            const Color got = img.at(x, y);
+            if (aa_tris == 1 && other_tris == 0) {
+                // One anti-aliased triangle over the black background: each channel must match
+                // a covered-sample count between the certain and the possible ones.
+                const Color low = raster::mix(raster::colors::black, aa_color, lo);
+                const Color high = raster::mix(raster::colors::black, aa_color, hi);
+                auto within = [](int v, int a, int b) { return v >= std::min(a, b) - 2 && v <= std::max(a, b) + 2; };
+                if (!within(got.r, low.r, high.r) || !within(got.g, low.g, high.g) || !within(got.b, low.b, high.b)) {
+                    aa_wrong.add(x, y, " is " + str(got) + ", expected " + str(low) + (hi > lo ? " to " + str(high) : ""));
+                }
+                j.tolerance.lenient.set(x, y);  // judged above, with the sample-count range
+                continue;
+            }
+            if (lenient) {
+                j.tolerance.lenient.set(x, y);
+                continue;
+            }
+            if (near(got, want, tol)) continue;
+            const bool want_filled = want != raster::colors::black, got_filled = got != raster::colors::black;
+            if (on_edge && want_filled != got_filled) {
+                rule.add(x, y);
+            } else if (want_filled && !got_filled) {
+                (in_last ? last_row : missing).add(x, y);
+            } else if (!want_filled) {
+                extra.add(x, y);
+            } else if (tol > 0) {
+                colors.add(x, y, " is " + str(got) + ", expected about " + str(want));
+            } else {
+                missing.add(x, y, " has the wrong color " + str(got) + ", expected " + str(want));
+            }
+        }
+    }
+    // Missing pixels only in last rows/columns point at the bounding box; mixed with others,
+    // they are ordinary misses.
+    if (missing.count > 0 && last_row.count > 0) {
+        missing.count += last_row.count;
+        last_row.count = 0;
+    }
+    for (const Tally* t : {&rule, &last_row, &missing, &extra, &colors, &aa_wrong}) t->report(j);
+    j.tolerance.strict_channel_diff = has_soft ? 2 : 0;
+}
+
+// For scenes of white anti-aliased triangles on black that do not overlap (m2.aa_*): the
+// mean difference between each pixel's coverage (its intensity) and the exact area of the
+// triangle inside it, over every pixel that either is nonzero. Reported, not judged: it is
+// the "error" half of the error-against-time table.
+void measure_area_error(const Scene& s, const std::vector<Shape>& shapes, const Image& img, cp::Judgement& j) {
+    for (const Tri& t : s.tris) {
+        if (t.aa == 0 || t.c[0] != raster::colors::white) return;
+    }
+    double total = 0;
+    long long pixels = 0;
+    for (int y = 0; y < s.height; ++y) {
+        for (int x = 0; x < s.width; ++x) {
+            double area = 0;
+            for (const Shape& shape : shapes) area += shape.area_in_pixel(x, y);
+            const double level = img.at(x, y).r / 255.0;
+            if (area <= 0 && level <= 0) continue;
+            total += std::abs(level - std::min(area, 1.0));
+            ++pixels;
+        }
+    }
+    if (pixels > 0) j.measures["coverage error vs exact area (mean, 0..1)"] = total / pixels;
+}
+
+// Watertightness: the triangles tile a region, so a pixel whose center is certainly inside
+// that region must be covered exactly once, and one near its outer boundary at most once.
+void judge_watertight(const Scene& s, const std::vector<Shape>& shapes, const Image& count, cp::Judgement& j) {
+    Tally twice{"fill rule", "are covered by two or more triangles (double coverage on a shared edge)"};
+    Tally gaps{"watertight", "inside the mesh are covered by no triangle (a gap on a shared edge)"};
+    // The outer boundary: edges used by one triangle only.
+    std::vector<std::pair<Vec2, Vec2>> boundary;
+    auto same = [](Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; };
+    for (std::size_t k = 0; k < s.tris.size(); ++k) {
+        for (int i = 0; i < 3; ++i) {
+            const Vec2 a = s.tris[k].v[i], b = s.tris[k].v[(i + 1) % 3];
+            bool shared = false;
+            for (std::size_t m = 0; m < s.tris.size() && !shared; ++m) {
+                for (int q = 0; q < 3 && m != k; ++q) {
+                    const Vec2 c = s.tris[m].v[q], d = s.tris[m].v[(q + 1) % 3];
+                    shared |= (same(a, d) && same(b, c)) || (same(a, c) && same(b, d));
+                }
+            }
+            if (!shared) boundary.push_back({a, b});
+        }
+    }
+    auto near_boundary = [&](Vec2 p) {
+        for (const auto& [a, b] : boundary) {
+            const Vec2 d = b - a;
+            const double t = std::clamp(raster::dot(p - a, d) / raster::dot(d, d), 0.0, 1.0);
+            if (raster::length(p - (a + t * d)) <= kMargin) return true;
+        }
+        return false;
+    };
+    for (int y = 0; y < s.height; ++y) {
+        for (int x = 0; x < s.width; ++x) {
+            const Vec2 center{x + 0.5, y + 0.5};
+            int in = 0, amb = 0;
+            for (const Shape& shape : shapes) {
+                const Side side = shape.classify(center).side;
+                in += side == Side::kIn;
+                amb += side == Side::kAmbiguous;
+            }
+            const int got = count.at(x, y).r;
+            if (got > 1) twice.add(x, y);
+            else if (got == 0 && in + amb > 0 && !near_boundary(center)) gaps.add(x, y);
+        }
+    }
+    twice.report(j);
+    gaps.report(j);
+}
+
+void judge_numbers(const Scene& s, const cp::Artifacts& art, cp::Judgement& j) {
+    auto value = [&](const std::string& k) {
+        const auto it = art.values.find(k);
+        return it == art.values.end() ? std::nan("") : it->second;
+    };
+    for (std::size_t i = 0; i < s.numbers.snaps.size(); ++i) {
+        const Vec2 p = s.numbers.snaps[i];
+        const std::string key = "snap." + std::to_string(i) + ".";
+        const bool ok = raster::is_finite(p) && std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate;
+        if ((value(key + "ok") == 1) != ok) {
+            j.findings.push_back({"snap", "snap" + str(p) + " returned " + (ok ? "false" : "true") + ", expected " +
+                                              (ok ? "true" : "false (not finite, or beyond kMaxCoordinate)")});
+        } else if (ok && (value(key + "x") != std::round(p.x * 16) || value(key + "y") != std::round(p.y * 16))) {
+            std::ostringstream m;
+            m << "snap" << str(p) << " gave (" << value(key + "x") << ", " << value(key + "y") << "), expected ("
+              << std::round(p.x * 16) << ", " << std::round(p.y * 16) << ") sixteenths (nearest, not truncated)";
+            j.findings.push_back({"snap", m.str()});
+        }
+    }
+    for (std::size_t i = 0; i < s.numbers.boxes.size(); ++i) {
+        const auto& v = s.numbers.boxes[i];
+        i128 g[3][2];
+        for (int k = 0; k < 3; ++k) {
+            g[k][0] = static_cast<i128>(std::llround(v[k].x * 16));
+            g[k][1] = static_cast<i128>(std::llround(v[k].y * 16));
+        }
+        const i128 e = (g[1][0] - g[0][0]) * (g[2][1] - g[0][1]) - (g[1][1] - g[0][1]) * (g[2][0] - g[0][0]);
+        if (value("edge." + std::to_string(i)) != double(e)) {
+            std::ostringstream m;
+            m << "edge(v0, v1, v2) for vertices " << str(v[0]) << " " << str(v[1]) << " " << str(v[2]) << " gave "
+              << value("edge." + std::to_string(i)) << ", expected " << double(e)
+              << " = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) in sixteenths";
+            j.findings.push_back({"edge function", m.str()});
+        }
+        // Pixel x is in the box when its center x + 0.5 lies in [min x, max x] (of the snapped
+        // vertices), clamped to the image.
+        auto range = [&](int axis, int size) {
+            const double lo = std::min({g[0][axis], g[1][axis], g[2][axis]}) / 16.0;
+            const double hi = std::max({g[0][axis], g[1][axis], g[2][axis]}) / 16.0;
+            const double first = std::clamp(std::ceil(lo - 0.5), 0.0, double(size));
+            const double end = std::clamp(std::floor(hi - 0.5) + 1, 0.0, double(size));
+            return std::pair<double, double>{first, end};
+        };
+        const auto [x0, x1] = range(0, s.width);
+        const auto [y0, y1] = range(1, s.height);
+        const std::string key = "box." + std::to_string(i) + ".";
+        const double gx0 = value(key + "x0"), gx1 = value(key + "x1"), gy0 = value(key + "y0"), gy1 = value(key + "y1");
+        const bool want_empty = x0 >= x1 || y0 >= y1, got_empty = gx0 >= gx1 || gy0 >= gy1;
+        if (want_empty != got_empty || (!want_empty && (gx0 != x0 || gx1 != x1 || gy0 != y0 || gy1 != y1))) {
+            std::ostringstream m;
+            m << "bounding_box for " << str(v[0]) << " " << str(v[1]) << " " << str(v[2]) << " gave [" << gx0 << ", "
+              << gx1 << ") x [" << gy0 << ", " << gy1 << "), expected [" << x0 << ", " << x1 << ") x [" << y0 << ", "
+              << y1 << ")" << (want_empty ? " (empty)" : "");
+            j.findings.push_back({"bounding box", m.str()});
+        }
+    }
+}
+
+}  // namespace
+
+cp::Judgement judge(const std::string& id, const cp::Artifacts& art) {
+    const Scene& s = scene(id);
+    cp::Judgement j;
+    j.tolerance.lenient = Mask(s.width, s.height);
+    const auto main_it = art.images.find("main");
+    if (main_it == art.images.end()) return j;
+    const Image& img = main_it->second;
+    if (img.width() != s.width || img.height() != s.height) return j;
+
+    if (art.stray_writes > 0) {
+        j.findings.push_back({"bounding box", "your code asked to write " + std::to_string(art.stray_writes) +
+                                                  " pixel(s) outside the image: clamp the bounding box to the image"});
+    }
+    std::vector<Shape> shapes;
+    for (const Tri& t : s.tris) shapes.emplace_back(t);
+    judge_pixels(s, shapes, img, j);
+    if (!s.tris.empty()) measure_area_error(s, shapes, img, j);
+    if (s.watertight) {
+        const auto count = art.images.find("count");
+        if (count != art.images.end() && count->second.width() == s.width && count->second.height() == s.height) {
+            judge_watertight(s, shapes, count->second, j);
+        }
+    }
+    if (s.check_winding) {
+        const auto other = art.images.find("other_winding");
+        if (other == art.images.end() || !(other->second == img)) {
+            long long differ = 0;
+            if (other != art.images.end() && other->second.width() == s.width && other->second.height() == s.height) {
+                differ = raster::compare(other->second, img).differing_pixels;
+            }
+            j.findings.push_back({"winding", "listing each triangle's vertices in the other order changed " +
+                                                 std::to_string(differ) +
+                                                 " pixel(s) (see other_winding.png): both windings must give the same pixels"});
+        }
+    }
+    if (!s.numbers.snaps.empty() || !s.numbers.boxes.empty()) judge_numbers(s, art, j);
+
+    long long lenient = 0;
+    for (unsigned char b : j.tolerance.lenient.bits) lenient += b;
+    j.tolerance.max_lenient_diffs = lenient;
+    j.tolerance.why = "the lenient pixels have a sample within 1/16 pixel of an edge (snapping decides them) or "
+                      "an anti-aliased coverage already judged against its range of covered samples";
+    return j;
+}
+
+}  // namespace m2cp
