@@ -24,10 +24,6 @@ std::int64_t edge(Fixed a, Fixed b, Fixed p) {
     return 0;
 }
 
-namespace {
-
-}  // namespace
-
 PixelRect bounding_box(Fixed v0, Fixed v1, Fixed v2, int width, int height) {
     // TODO 3: pixel x is a candidate when its center 16x + 8 (in sixteenths) lies between the
     // smallest and largest vertex x. Round with floor/ceil division (careful: negative

@@ -68,7 +68,8 @@ struct Fixed {
     std::int64_t x = 0, y = 0;
 };
 
-// TODO 1: snap p to the nearest point of the 1/16 grid. Returns false (leaving `out` alone)
+// TODO 1: snap p to the nearest point of the 1/16 grid, halves rounding away from zero (as
+// std::llround does). Returns false (leaving `out` alone)
 // when p is not finite or lies beyond +/-kMaxCoordinate.
 bool snap(Vec2 p, Fixed& out);
 

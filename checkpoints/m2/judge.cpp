@@ -245,13 +245,13 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
                     continue;
                 }
                 const Verdict v = shape.classify(center);
+                on_edge |= v.on_edge;  // an edge through the center: the fill rule decides it
                 if (v.side == Side::kOut) continue;
                 ++other_tris;
                 if (v.side == Side::kAmbiguous) {
                     lenient = true;
                     continue;
                 }
-                on_edge = v.on_edge;
                 want = t.gradient ? interpolate(t, shape.weights(center)) : t.c[0];
                 if (t.gradient) {
                     tol = 2;  // snapping moves a weight by < 0.001: under a level; rounding adds one

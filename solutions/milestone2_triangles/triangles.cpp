@@ -37,9 +37,9 @@ std::int64_t edge(Fixed a, Fixed b, Fixed p) {
     // END SOLUTION
 }
 
+// BEGIN SOLUTION
 namespace {
 
-// BEGIN SOLUTION
 // Division rounding toward minus infinity and plus infinity (C++'s / rounds toward zero,
 // which is wrong for negative coordinates).
 std::int64_t floor_div(std::int64_t a, std::int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
@@ -50,9 +50,9 @@ Fixed center(int x, int y) {
     return {std::int64_t(x) * kSubpixelSteps + kSubpixelSteps / 2, std::int64_t(y) * kSubpixelSteps + kSubpixelSteps / 2};
 }
 
-// END SOLUTION
 }  // namespace
 
+// END SOLUTION
 PixelRect bounding_box(Fixed v0, Fixed v1, Fixed v2, int width, int height) {
     // TODO 3: pixel x is a candidate when its center 16x + 8 (in sixteenths) lies between the
     // smallest and largest vertex x. Round with floor/ceil division (careful: negative
