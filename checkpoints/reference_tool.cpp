@@ -5,9 +5,12 @@
 //   reference_tool verify         check the stored expected images against a fresh render
 //   reference_tool gallery <dir>  render every milestone's demo scenes into <dir>, printing
 //                                 each scene's error against its expected image and its time
+//   reference_tool aa-table       milestone 2's anti-aliasing table: coverage error against the
+//                                 exact area, and render time, for 1, 4 and 16 samples
 //
 // Expected images come only from here: never edit them by hand.
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -16,6 +19,7 @@
 #include "harness/showcase.h"
 #include "m1/render.h"
 #include "m1/scenes.h"
+#include "m2/judge.h"
 #include "m2/render.h"
 #include "m2/scenes.h"
 #include "raster/compare.h"
@@ -97,6 +101,21 @@ int gallery(const std::string& dir) {
     return cp::showcase(items, dir, "Reference gallery: every milestone's demo scenes");
 }
 
+int aa_table() {
+    std::cout << "| samples per pixel | mean coverage error vs exact area | render time (ms) |\n"
+              << "|---|---|---|\n";
+    for (const char* id : {"m2.aa_1", "m2.aa_4", "m2.aa_16"}) {
+        cp::Artifacts a;
+        const double seconds = cp::time_best_of([&] { a = m2cp::reference::render(id); });
+        const cp::Judgement j = m2cp::judge(id, a);
+        const auto error = j.measures.begin();
+        std::cout << "| " << std::string(id).substr(6) << " | " << std::fixed << std::setprecision(4)
+                  << (error != j.measures.end() ? error->second : -1) << " | " << std::setprecision(3)
+                  << seconds * 1e3 << " |\n";
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -105,10 +124,11 @@ int main(int argc, char** argv) {
         if (args.size() == 1 && args[0] == "expected") return write_expected();
         if (args.size() == 1 && args[0] == "verify") return verify();
         if (args.size() == 2 && args[0] == "gallery") return gallery(args[1]);
+        if (args.size() == 1 && args[0] == "aa-table") return aa_table();
     } catch (const std::exception& e) {
         std::cerr << "reference_tool: " << e.what() << "\n";
         return 1;
     }
-    std::cerr << "usage: reference_tool expected | verify | gallery <dir>\n";
+    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table\n";
     return 2;
 }

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Installs the Debian/Ubuntu packages this project needs, if any are missing.
-# Works as root or through sudo; does nothing when everything is already there.
+# Installs the Debian/Ubuntu packages this project needs, if any are missing, plus any package
+# names given as arguments (CI adds clang). Works as root or through sudo; does nothing when
+# everything is already there.
 set -euo pipefail
 
-packages=(cmake make g++ pkg-config catch2 libstb-dev)
+packages=(cmake make g++ pkg-config catch2 libstb-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -293,6 +293,18 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
             }
         }
     }
+    // Nothing drawn at all (the untouched skeleton, or an early return): one plain finding.
+    bool blank = true;
+    for (int y = 0; y < s.height && blank; ++y) {
+        for (int x = 0; x < s.width && blank; ++x) blank = img.at(x, y) == raster::colors::black;
+    }
+    if (blank && missing.count + rule.count + last_row.count + colors.count + aa_wrong.count > 0) {
+        j.findings.push_back({"coverage", "nothing is drawn, but " +
+                                              std::to_string(missing.count + rule.count + last_row.count + colors.count + aa_wrong.count) +
+                                              " pixels should be"});
+        j.tolerance.strict_channel_diff = has_soft ? 2 : 0;
+        return;
+    }
     // Missing pixels only in last rows/columns point at the bounding box; mixed with others,
     // they are ordinary misses.
     if (missing.count > 0 && last_row.count > 0) {
