@@ -5,11 +5,16 @@
 //   reference_tool verify         check the stored expected images against a fresh render
 //   reference_tool gallery <dir>  render every milestone's demo scenes into <dir>, printing
 //                                 each scene's error against its expected image and its time
-//   reference_tool aa-table       milestone 2's anti-aliasing table: coverage error against the
-//                                 exact area, and render time, for 1, 4 and 16 samples
+//   reference_tool aa-table [--update FILE | --check FILE]
+//                                 milestone 2's anti-aliasing table: coverage error against the
+//                                 exact area, and render time, for 1, 4 and 16 samples. --update
+//                                 rewrites the table between the aa-table markers in FILE (the
+//                                 lesson); --check fails if the errors there are not current.
 //
 // Expected images come only from here: never edit them by hand.
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -101,18 +106,57 @@ int gallery(const std::string& dir) {
     return cp::showcase(items, dir, "Reference gallery: every milestone's demo scenes");
 }
 
-int aa_table() {
-    std::cout << "| samples per pixel | mean coverage error vs exact area | render time (ms) |\n"
-              << "|---|---|---|\n";
+std::string aa_table_text() {
+    std::ostringstream out;
+    out << "| samples per pixel | mean coverage error vs exact area | render time (ms) |\n"
+        << "|---|---|---|\n";
     for (const char* id : {"m2.aa_1", "m2.aa_4", "m2.aa_16"}) {
         cp::Artifacts a;
         const double seconds = cp::time_best_of([&] { a = m2cp::reference::render(id); });
         const cp::Judgement j = m2cp::judge(id, a);
         const auto error = j.measures.begin();
-        std::cout << "| " << std::string(id).substr(6) << " | " << std::fixed << std::setprecision(4)
-                  << (error != j.measures.end() ? error->second : -1) << " | " << std::setprecision(3)
-                  << seconds * 1e3 << " |\n";
+        out << "| " << std::string(id).substr(6) << " | " << std::fixed << std::setprecision(4)
+            << (error != j.measures.end() ? error->second : -1) << " | " << std::setprecision(3) << seconds * 1e3
+            << " |\n";
     }
+    return out.str();
+}
+
+// The table's rows without the time column, which depends on the machine.
+std::string without_times(const std::string& table) {
+    std::istringstream in(table);
+    std::string line, out;
+    while (std::getline(in, line)) out += line.substr(0, line.rfind('|', line.size() - 2)) + "\n";
+    return out;
+}
+
+int aa_table(const std::vector<std::string>& args) {
+    const std::string table = aa_table_text();
+    if (args.size() == 1) {
+        std::cout << table;
+        return 0;
+    }
+    const std::string begin = "<!-- aa-table", end = "<!-- /aa-table -->";
+    std::ifstream in(args[2]);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    std::string text = ss.str();
+    const auto b = text.find(begin), e = text.find(end);
+    if (b == std::string::npos || e == std::string::npos || e < b) {
+        std::cerr << args[2] << ": no aa-table markers\n";
+        return 1;
+    }
+    const auto body = text.find('\n', b) + 1;
+    if (args[1] == "--check") {
+        if (without_times(text.substr(body, e - body)) != without_times(table)) {
+            std::cerr << args[2] << ": the anti-aliasing table is out of date; run `make regenerate`\n";
+            return 1;
+        }
+        std::cout << args[2] << ": the anti-aliasing table's errors are current\n";
+        return 0;
+    }
+    text.replace(body, e - body, table);
+    std::ofstream(args[2]) << text;
     return 0;
 }
 
@@ -124,11 +168,13 @@ int main(int argc, char** argv) {
         if (args.size() == 1 && args[0] == "expected") return write_expected();
         if (args.size() == 1 && args[0] == "verify") return verify();
         if (args.size() == 2 && args[0] == "gallery") return gallery(args[1]);
-        if (args.size() == 1 && args[0] == "aa-table") return aa_table();
+        if (!args.empty() && args[0] == "aa-table" && (args.size() == 1 || (args.size() == 3 && (args[1] == "--update" || args[1] == "--check")))) {
+            return aa_table(args);
+        }
     } catch (const std::exception& e) {
         std::cerr << "reference_tool: " << e.what() << "\n";
         return 1;
     }
-    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table\n";
+    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table [--update|--check FILE]\n";
     return 2;
 }
