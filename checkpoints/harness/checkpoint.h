@@ -15,6 +15,7 @@
 
 #include <functional>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,29 @@ bool register_suite(const Suite& suite);
 
 // Runs one checkpoint: render (or read artifacts), judge, compare, report, record.
 void run_checkpoint(const Suite& suite, const std::string& id);
+
+// The frame of every render half: makes the main image (with the stray-write budget), runs
+// `draw`, turns a spent budget into values[kRunawayKey], sums the stray writes of all images
+// and stores the main image as "main". Extra images a scene needs go into out.images.
+Artifacts render_guarded(int width, int height,
+                         const std::function<void(raster::Image& main, Artifacts& out)>& draw);
+
+// A fresh image for a render half's extra pictures, with the stray-write budget set.
+raster::Image guarded_image(int width, int height);
+
+// The judge's first look: the main image if it exists and has the scene's size (otherwise the
+// harness reports the problem), and a finding for any stray write.
+const raster::Image* main_image_for_judging(const Artifacts& art, int width, int height, Judgement& j,
+                                            const std::string& stray_topic, const std::string& stray_advice);
+
+// Finds the scene with the given id in a milestone's list.
+template <typename Scene>
+const Scene& find_scene(const std::vector<Scene>& all, const std::string& id) {
+    for (const Scene& s : all) {
+        if (s.id == id) return s;
+    }
+    throw std::out_of_range("no scene named " + id);
+}
 
 // Helpers shared by renderers and judges.
 double time_best_of(const std::function<void()>& fn);  // seconds; a few runs for tiny scenes

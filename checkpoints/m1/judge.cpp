@@ -458,17 +458,10 @@ struct Checker {
 cp::Judgement judge(const std::string& id, const cp::Artifacts& art) {
     const Scene& s = scene(id);
     cp::Judgement j;
-    j.tolerance.lenient = Mask(s.width, s.height);
-    const auto main_it = art.images.find("main");
-    if (main_it == art.images.end()) return j;  // the harness reports the missing image
-    const Image& img = main_it->second;
-    if (img.width() != s.width || img.height() != s.height) return j;  // size mismatch: ditto
-
-    if (art.stray_writes > 0) {
-        j.findings.push_back({"clipping", "your code asked to write " + std::to_string(art.stray_writes) +
-                                              " pixel(s) outside the image (Image::stray_writes). Clip "
-                                              "first, so the work stays proportional to the visible pixels"});
-    }
+    const Image* main = cp::main_image_for_judging(art, s.width, s.height, j, "clipping",
+                                                   "clip first, so the work stays proportional to the visible pixels");
+    if (main == nullptr) return j;  // the harness reports a missing or mis-sized image
+    const Image& img = *main;
     Checker check{s, img, j, {}};
     std::vector<Plan> plans;
     const bool has_aa = std::any_of(s.lines.begin(), s.lines.end(), [](const Segment& g) { return g.aa; });

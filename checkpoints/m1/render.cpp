@@ -27,8 +27,7 @@ void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
         case Kind::kLines:
             for (const Segment& seg : s.lines) draw(img, seg, false);
             if (s.check_reversed) {
-                raster::Image& rev = out.images["reversed"] = raster::Image(s.width, s.height);
-                rev.limit_stray_writes(cp::kStrayWriteBudget);
+                raster::Image& rev = out.images["reversed"] = cp::guarded_image(s.width, s.height);
                 for (const Segment& seg : s.lines) draw(rev, seg, true);
             }
             break;
@@ -67,18 +66,7 @@ void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
 
 cp::Artifacts render(const std::string& id) {
     const Scene& s = scene(id);
-    cp::Artifacts out;
-    raster::Image img(s.width, s.height);
-    img.limit_stray_writes(cp::kStrayWriteBudget);
-    try {
-        draw_scene(s, img, out);
-    } catch (const raster::StrayWriteLimit&) {
-        out.values[cp::kRunawayKey] = 1;  // keep what was drawn: the picture shows where
-    }
-    for (const auto& [name, extra] : out.images) out.stray_writes += extra.stray_writes();
-    out.stray_writes += img.stray_writes();
-    out.images["main"] = std::move(img);
-    return out;
+    return cp::render_guarded(s.width, s.height, [&](raster::Image& img, cp::Artifacts& out) { draw_scene(s, img, out); });
 }
 
 }  // namespace RASTER_FLAVOUR

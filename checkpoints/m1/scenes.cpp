@@ -1,5 +1,7 @@
 #include "m1/scenes.h"
 
+#include "harness/checkpoint.h"
+
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -338,12 +340,7 @@ const std::vector<Scene>& scenes() {
     return all;
 }
 
-const Scene& scene(const std::string& id) {
-    for (const Scene& s : scenes()) {
-        if (s.id == id) return s;
-    }
-    throw std::out_of_range("no milestone-1 scene named " + id);
-}
+const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
 
 Color outcode_color(int code) {
     // Inside is white; each side has a hue and the corners mix their two sides.

@@ -448,16 +448,10 @@ void judge_numbers(const Scene& s, const cp::Artifacts& art, cp::Judgement& j) {
 cp::Judgement judge(const std::string& id, const cp::Artifacts& art) {
     const Scene& s = scene(id);
     cp::Judgement j;
-    j.tolerance.lenient = Mask(s.width, s.height);
-    const auto main_it = art.images.find("main");
-    if (main_it == art.images.end()) return j;
-    const Image& img = main_it->second;
-    if (img.width() != s.width || img.height() != s.height) return j;
-
-    if (art.stray_writes > 0) {
-        j.findings.push_back({"bounding box", "your code asked to write " + std::to_string(art.stray_writes) +
-                                                  " pixel(s) outside the image: clamp the bounding box to the image"});
-    }
+    const Image* main = cp::main_image_for_judging(art, s.width, s.height, j, "bounding box",
+                                                   "clamp the bounding box to the image");
+    if (main == nullptr) return j;  // the harness reports a missing or mis-sized image
+    const Image& img = *main;
     std::vector<Shape> shapes;
     for (const Tri& t : s.tris) shapes.emplace_back(t);
     judge_pixels(s, shapes, img, j);

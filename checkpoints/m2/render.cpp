@@ -31,16 +31,14 @@ m2::Fixed fixed(Vec2 p) { return {std::llround(p.x * m2::kSubpixelSteps), std::l
 void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
     for (const Tri& t : s.tris) draw(img, t, false, false);
     if (s.check_winding) {
-        raster::Image& other = out.images["other_winding"] = raster::Image(s.width, s.height);
-        other.limit_stray_writes(cp::kStrayWriteBudget);
+        raster::Image& other = out.images["other_winding"] = cp::guarded_image(s.width, s.height);
         for (const Tri& t : s.tris) draw(other, t, true, false);
     }
     if (s.watertight) {
         // How many triangles cover each pixel: each is drawn alone in white, then counted.
         raster::Image& count = out.images["count"] = raster::Image(s.width, s.height);
         for (const Tri& t : s.tris) {
-            raster::Image alone(s.width, s.height);
-            alone.limit_stray_writes(cp::kStrayWriteBudget);
+            raster::Image alone = cp::guarded_image(s.width, s.height);
             draw(alone, t, false, true);
             out.stray_writes += alone.stray_writes();
             for (int y = 0; y < s.height; ++y) {
@@ -78,18 +76,7 @@ void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
 
 cp::Artifacts render(const std::string& id) {
     const Scene& s = scene(id);
-    cp::Artifacts out;
-    raster::Image img(s.width, s.height);
-    img.limit_stray_writes(cp::kStrayWriteBudget);
-    try {
-        draw_scene(s, img, out);
-    } catch (const raster::StrayWriteLimit&) {
-        out.values[cp::kRunawayKey] = 1;
-    }
-    for (const auto& [name, extra] : out.images) out.stray_writes += extra.stray_writes();
-    out.stray_writes += img.stray_writes();
-    out.images["main"] = std::move(img);
-    return out;
+    return cp::render_guarded(s.width, s.height, [&](raster::Image& img, cp::Artifacts& out) { draw_scene(s, img, out); });
 }
 
 }  // namespace RASTER_FLAVOUR

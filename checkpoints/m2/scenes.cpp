@@ -1,5 +1,7 @@
 #include "m2/scenes.h"
 
+#include "harness/checkpoint.h"
+
 #include <array>
 #include <cmath>
 #include <limits>
@@ -283,11 +285,6 @@ const std::vector<Scene>& scenes() {
     return all;
 }
 
-const Scene& scene(const std::string& id) {
-    for (const Scene& s : scenes()) {
-        if (s.id == id) return s;
-    }
-    throw std::out_of_range("no milestone-2 scene named " + id);
-}
+const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
 
 }  // namespace m2cp
