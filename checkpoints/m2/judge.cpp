@@ -376,7 +376,8 @@ void judge_watertight(const Scene& s, const std::vector<Shape>& shapes, const Im
                 in += side == Side::kIn;
                 amb += side == Side::kAmbiguous;
             }
-            const int got = count.at(x, y).r;
+            const Color c = count.at(x, y);  // encoding: see render.cpp
+            const int got = c == raster::colors::black ? 0 : c.r == 255 ? c.b : 1;
             if (got > 1) twice.add(x, y);
             else if (got == 0 && in + amb > 0 && !near_boundary(center)) gaps.add(x, y);
         }

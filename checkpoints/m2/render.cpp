@@ -36,6 +36,7 @@ void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
     }
     if (s.watertight) {
         // How many triangles cover each pixel: each is drawn alone in white, then counted.
+        // Encoding: 0 black, 1 gray (110, 110, 110), n >= 2 red (255, 40, n).
         raster::Image& count = out.images["count"] = raster::Image(s.width, s.height);
         for (const Tri& t : s.tris) {
             raster::Image alone = cp::guarded_image(s.width, s.height);
@@ -45,7 +46,8 @@ void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
                 for (int x = 0; x < s.width; ++x) {
                     if (alone.at(x, y) != raster::colors::black) {
                         const Color c = count.at(x, y);
-                        count.set(x, y, {static_cast<std::uint8_t>(c.r + 1), 0, 0});
+                        const int n = c == raster::colors::black ? 1 : c.r == 255 ? c.b + 1 : 2;
+                        count.set(x, y, n == 1 ? Color{110, 110, 110} : Color{255, 40, static_cast<std::uint8_t>(n)});
                     }
                 }
             }

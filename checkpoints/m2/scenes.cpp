@@ -158,8 +158,9 @@ std::vector<Scene> make_scenes() {
         std::vector<Tri> tris;
         for (int j = 0; j < 6; ++j) {
             for (int i = 0; i < 6; ++i) {
-                // Corners on the 1/16 grid, some of them exactly on pixel centers.
-                auto p = [](int a, int b) { return Vec2{3.5 + 9.625 * a, 2.25 + 9.875 * b + 0.5 * (a % 2)}; };
+                // Every x on a pixel center, so vertical edges run through centers; every other
+                // column of corners a quarter pixel lower, so some edges are slightly slanted.
+                auto p = [](int a, int b) { return Vec2{2.5 + 10.0 * a, 1.5 + 10.0 * b + 0.25 * (a % 2)}; };
                 const Color c1 = kPalette[(i + j) % 8], c2 = kPalette[(i + j + 3) % 8];
                 if ((i + j) % 2 == 0) {
                     tris.push_back(solid(p(i, j), p(i + 1, j), p(i + 1, j + 1), c1));
