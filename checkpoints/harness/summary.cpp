@@ -75,8 +75,7 @@ int main(int argc, char** argv) {
                       << std::setw(11) << "-";
         }
         std::cout << "  "
-                  << (r.status == "crashed" ? "crashed or timed out: run it alone to see why"
-                                            : r.concepts)
+                  << (r.status == "crashed" ? "crashed or timed out (see below)" : r.concepts)
                   << "\n";
         json << "    {\"id\": \"" << json_escape(r.id) << "\", \"milestone\": \""
              << json_escape(r.milestone) << "\", \"title\": \"" << json_escape(r.title)
@@ -98,6 +97,13 @@ int main(int argc, char** argv) {
 
     std::cout << std::string(100, '-') << "\n"
               << passed << " passed, " << failed + crashed << " failed" << "\n";
+    for (const cp::Record& r : records) {
+        if (r.status != "crashed") continue;
+        std::cout << r.id << " crashed or ran out of time before finishing. To see why, run it alone\n"
+                  << "  (in a debugger if you like), from the build folder:\n"
+                  << "    cd checkpoints/run/" << r.milestone << "_student && ../../checkpoints_" << r.milestone << " "
+                  << r.id << "\n";
+    }
     if (argc > 3) {
         const long expected = std::stol(argv[3]);
         if (static_cast<long>(records.size()) < expected) {
