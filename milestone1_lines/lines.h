@@ -17,8 +17,9 @@
 //
 //  * Clipping. Lines may start and end anywhere, up to about +/-1e300. Only pixels inside the
 //    image are ever written (Image::stray_writes() stays 0), and the work done is proportional
-//    to the number of visible pixels, never to the line's full length. Pixels of a clipped
-//    line stay within one pixel of the ideal line.
+//    to the number of visible pixels, never to the line's full length. Where a line is
+//    clipped, snapping the clipped endpoints may shift it: its pixels must stay within
+//    1 + |slope| / 2 pixels of the ideal line (measured along the minor axis), with no gaps.
 //
 //  * Bad input. An endpoint that is NaN or infinite draws nothing (no crash, no hang).
 //
