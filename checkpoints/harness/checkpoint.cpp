@@ -61,16 +61,21 @@ Artifacts load_artifacts(const std::string& id) {
     Artifacts a;
     std::ifstream in(dir / "values.txt");
     if (!in) throw std::runtime_error("no artifacts for " + id + " in " + dir.string());
-    std::string key;
-    while (in >> key) {
+    // Line by line, numbers through strtod: a student's code may well produce NaN or
+    // infinity, which operator>> refuses (and would end the reading there).
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream words(line);
+        std::string key, name, number;
+        words >> key;
+        if (key == "value") words >> name;
+        words >> number;
+        const double v = std::strtod(number.c_str(), nullptr);
         if (key == "seconds") {
-            in >> a.seconds;
+            a.seconds = v;
         } else if (key == "stray_writes") {
-            in >> a.stray_writes;
+            a.stray_writes = static_cast<long long>(v);
         } else if (key == "value") {
-            std::string name;
-            double v = 0;
-            in >> name >> v;
             a.values[name] = v;
         }
     }
@@ -240,8 +245,10 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
     rec.student_ms = student.seconds * 1e3;
     rec.reference_ms = reference.seconds * 1e3;
     rec.status = findings.empty() ? "pass" : "fail";
+    std::vector<std::string> topics;  // each finding's topic once, in order of appearance
     for (const Finding& f : findings) {
-        if (rec.concepts.find(f.topic) == std::string::npos) {
+        if (std::find(topics.begin(), topics.end(), f.topic) == topics.end()) {
+            topics.push_back(f.topic);
             rec.concepts += (rec.concepts.empty() ? "" : ",") + f.topic;
         }
     }
