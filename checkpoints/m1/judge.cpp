@@ -277,7 +277,7 @@ struct Checker {
             }
         }
         if (strays > 0) {
-            add(scene.lines.empty() ? "outcode" : "stray pixels",
+            add("stray pixels",
                 std::to_string(strays) + " pixel(s) are drawn where no line passes within half a "
                 "pixel of their center, e.g. " + first);
         }
