@@ -8,7 +8,7 @@ namespace raster {
 std::uint8_t to_channel(double v) {
     if (!(v > 0)) return 0;  // also catches NaN
     if (v >= 255) return 255;
-    return static_cast<std::uint8_t>(std::lround(v));
+    return static_cast<std::uint8_t>(v + 0.5);  // round half up; v is positive here
 }
 
 Color from_unit(double r, double g, double b) {

@@ -44,7 +44,11 @@ void Image::blend(int x, int y, Color c, double coverage) {
         count_stray_write();
         return;
     }
-    set(x, y, mix(at(x, y), c, coverage));
+    std::uint8_t* p = &bytes_[offset(x, y)];
+    const Color mixed = mix({p[0], p[1], p[2]}, c, coverage);
+    p[0] = mixed.r;
+    p[1] = mixed.g;
+    p[2] = mixed.b;
 }
 
 void Image::count_stray_write() {
