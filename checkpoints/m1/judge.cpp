@@ -503,10 +503,8 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art) {
         }
     }
 
-    long long lenient = 0;
-    for (unsigned char b : j.tolerance.lenient.bits) lenient += b;
     j.tolerance.strict_channel_diff = has_aa ? 3 : 0;
-    j.tolerance.max_lenient_diffs = lenient;
+    j.tolerance.max_lenient_diffs = j.tolerance.lenient.count();
     j.tolerance.why = "the lenient pixels are exactly those where correct implementations may "
                       "legitimately differ (ties, bands of clipped lines, ends of Wu lines), and the "
                       "pixel rules above check them instead";

@@ -477,9 +477,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art) {
     }
     if (!s.numbers.snaps.empty() || !s.numbers.boxes.empty()) judge_numbers(s, art, j);
 
-    long long lenient = 0;
-    for (unsigned char b : j.tolerance.lenient.bits) lenient += b;
-    j.tolerance.max_lenient_diffs = lenient;
+    j.tolerance.max_lenient_diffs = j.tolerance.lenient.count();
     j.tolerance.why = "the lenient pixels have a sample within 1/16 pixel of an edge (snapping decides them) or "
                       "an anti-aliased coverage already judged against its range of covered samples";
     return j;

@@ -40,6 +40,11 @@ struct Mask {
     void set(int x, int y) {
         if (x >= 0 && y >= 0 && x < width && y < height) bits[index(x, y)] = 1;
     }
+    long long count() const {
+        long long n = 0;
+        for (unsigned char b : bits) n += b;
+        return n;
+    }
 
 private:
     std::size_t index(int x, int y) const {
