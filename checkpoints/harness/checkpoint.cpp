@@ -286,6 +286,8 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
             std::cout << "    ... and " << findings.size() - shown << " more\n";
         }
         std::cout << "  hint: " << suite.hint(id) << "\n";
+        rec.hint = suite.hint(id);
+        for (const Finding& f : findings) rec.findings.push_back("[" + f.topic + "] " + f.message);
     }
     // One line that tools (and the project's own tests) can match.
     std::cout << "VERDICT " << id << " " << (findings.empty() ? "PASS" : "FAIL")

@@ -14,8 +14,9 @@ namespace cp {
 
 namespace {
 
-// Text values never contain tabs or newlines (ids, titles and concept tags are ours), so a
-// "key<TAB>value" line format is enough and keeps the files readable by eye.
+// Text values never contain tabs or newlines (ids, titles, concept tags, findings and hints
+// are the checkpoints' own words), so a "key<TAB>value" line format is enough and keeps the
+// files readable by eye.
 void put_metrics(std::ostream& out, const std::string& prefix, const raster::ImageMetrics& m) {
     out << prefix << "differing_pixels\t" << m.differing_pixels << "\n"
         << prefix << "differing_share\t" << m.differing_share << "\n"
@@ -49,6 +50,8 @@ void write_record(const Record& r) {
     put_metrics(out, "student.", r.student);
     put_metrics(out, "reference.", r.reference);
     for (const auto& [name, v] : r.measures) out << "measure." << name << "\t" << v << "\n";
+    for (const std::string& f : r.findings) out << "finding\t" << f << "\n";
+    if (!r.hint.empty()) out << "hint\t" << r.hint << "\n";
 }
 
 std::vector<Record> read_records(const std::string& dir) {
@@ -75,6 +78,8 @@ std::vector<Record> read_records(const std::string& dir) {
             else if (key.rfind("student.", 0) == 0) get_metric(r.student, key.substr(8), v);
             else if (key.rfind("reference.", 0) == 0) get_metric(r.reference, key.substr(10), v);
             else if (key.rfind("measure.", 0) == 0) r.measures[key.substr(8)] = std::stod(v);
+            else if (key == "finding") r.findings.push_back(v);
+            else if (key == "hint") r.hint = v;
         }
         if (!r.id.empty()) records.push_back(r);
     }

@@ -20,6 +20,8 @@ struct Record {
     double student_ms = 0, reference_ms = 0;
     std::string output_dir;  // where the failure pictures are
     std::map<std::string, double> measures;  // see Judgement::measures
+    std::vector<std::string> findings;       // "[topic] message", as printed
+    std::string hint;
 };
 
 void write_record(const Record& r);  // into $RASTER_RESULTS_DIR (default: checkpoint_results)

@@ -3,10 +3,14 @@
 //
 //   checkpoint_summary <results-dir> <json-out> [expected-count]
 //
+// Beside the JSON it writes an HTML page (same name, .html) with every checkpoint's verdict,
+// numbers and, for failures, the actual, expected and diff pictures side by side.
+//
 // expected-count is how many checkpoints were run; fewer records than that means some
 // process never started (a build failure), which the table says.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -40,6 +44,65 @@ std::string json_metrics(const raster::ImageMetrics& m) {
            ", \"max_channel_diff\": " + std::to_string(m.max_channel_diff) +
            ", \"mean_abs_error\": " + json_number(m.mean_abs_error) +
            ", \"psnr_db\": " + json_number(m.psnr_db) + "}";
+}
+
+std::string html_escape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '<') out += "&lt;";
+        else if (c == '>') out += "&gt;";
+        else if (c == '&') out += "&amp;";
+        else if (c == '"') out += "&quot;";
+        else out += c;
+    }
+    return out;
+}
+
+void write_html(const std::vector<cp::Record>& records, const std::string& path) {
+    std::ofstream html(path);
+    html << "<!doctype html><meta charset=utf-8><title>Checkpoints</title>\n"
+            "<style>body{font-family:sans-serif;background:#1e1e1e;color:#ddd;margin:2em}"
+            "a{color:#8cf}table{border-collapse:collapse}td,th{padding:4px 10px;border-bottom:1px solid #444;text-align:left}"
+            ".pass{color:#6c6}.fail{color:#f66}.crashed{color:#fa0}"
+            "img{image-rendering:pixelated;width:192px;border:1px solid #555;margin-right:6px}</style>\n"
+            "<h1>Checkpoints</h1>\n<table><tr><th>checkpoint<th>result<th>pixels differ<th>mean error"
+            "<th>your ms<th>reference ms<th>concepts</tr>\n";
+    for (const cp::Record& r : records) {
+        html << "<tr><td><a href=\"#" << html_escape(r.id) << "\">" << html_escape(r.id) << "</a><td class=" << r.status
+             << ">" << r.status;
+        if (r.has_metrics) {
+            html << std::fixed << std::setprecision(3) << "<td>" << r.student.differing_pixels << "<td>"
+                 << r.student.mean_abs_error << "<td>" << r.student_ms << "<td>" << r.reference_ms;
+        } else {
+            html << "<td>-<td>-<td>-<td>-";
+        }
+        html << "<td>" << html_escape(r.concepts) << "</tr>\n";
+    }
+    html << "</table>\n";
+    for (const cp::Record& r : records) {
+        if (r.status == "pass") continue;
+        html << "<h2 id=\"" << html_escape(r.id) << "\">" << html_escape(r.id) << ": " << html_escape(r.title)
+             << "</h2>\n<p class=" << r.status << ">" << r.status << " " << html_escape(r.concepts) << "</p>\n";
+        if (!r.findings.empty()) {
+            html << "<ul>";
+            for (const std::string& f : r.findings) html << "<li>" << html_escape(f) << "</li>";
+            html << "</ul>\n";
+        }
+        if (!r.hint.empty()) html << "<p><b>hint:</b> " << html_escape(r.hint) << "</p>\n";
+        if (r.output_dir.empty()) {
+            html << "<p>No pictures: the checkpoint crashed or ran out of time. Run it alone to see why.</p>\n";
+            continue;
+        }
+        html << "<p>";
+        for (const char* name : {"actual", "expected", "diff", "reversed", "other_winding", "count"}) {
+            const std::filesystem::path p = std::filesystem::path(r.output_dir) / (std::string(name) + ".png");
+            if (std::filesystem::exists(p)) {
+                html << "<figure style=\"display:inline-block;margin:0 8px 0 0\"><img src=\"" << html_escape(p.string())
+                     << "\"><figcaption>" << name << "</figcaption></figure>";
+            }
+        }
+        html << "</p>\n";
+    }
 }
 
 }  // namespace
@@ -89,7 +152,11 @@ int main(int argc, char** argv) {
             json << (it == r.measures.begin() ? "" : ", ") << "\"" << json_escape(it->first)
                  << "\": " << json_number(it->second);
         }
-        json << "}, \"pictures\": \"" << json_escape(r.output_dir) << "\"}"
+        json << "}, \"findings\": [";
+        for (std::size_t k = 0; k < r.findings.size(); ++k) {
+            json << (k ? ", " : "") << "\"" << json_escape(r.findings[k]) << "\"";
+        }
+        json << "], \"hint\": \"" << json_escape(r.hint) << "\", \"pictures\": \"" << json_escape(r.output_dir) << "\"}"
              << (i + 1 < records.size() ? "," : "") << "\n";
     }
     json << "  ],\n  \"passed\": " << passed << ",\n  \"failed\": " << failed
@@ -111,7 +178,8 @@ int main(int argc, char** argv) {
                       << " checkpoint(s) left no result: did the build fail?\n";
         }
     }
-    std::cout << "Pictures of each failure are listed in the output above; this table is also in "
-              << argv[2] << "\n";
+    const std::string html = std::filesystem::path(argv[2]).replace_extension(".html").string();
+    write_html(records, html);
+    std::cout << "This table is also in " << argv[2] << ", and with every failure's pictures in\n  " << html << "\n";
     return 0;
 }

@@ -377,6 +377,12 @@ struct Checker {
         // (FMA, -O3) move a channel by at most 1; a real error (swapped weights, half-pixel
         // offset) moves it by tens of levels.
         constexpr int kTol = 3;
+        const bool any_lit = std::any_of(plan.aa_expected.begin(), plan.aa_expected.end(),
+                                         [&](const Plan::Aa& e) { return lit(img, e.p); });
+        if (!plan.aa_expected.empty() && !any_lit) {
+            add("wu coverage", plan.name + ": the anti-aliased line is not drawn at all");
+            return;
+        }
         for (const Plan::Aa& e : plan.aa_expected) {
             if (claim(e.p) > 1) {  // another line crosses here: only the other checks apply
                 j.tolerance.lenient.set(e.p.x, e.p.y);
