@@ -167,6 +167,7 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
     rec.id = id;
     rec.milestone = suite.milestone;
     rec.title = suite.title(id);
+    rec.order = static_cast<int>(std::find(suite.ids.begin(), suite.ids.end(), id) - suite.ids.begin());
     rec.status = "crashed";  // overwritten below unless the code under test never returns
     if (mode != Mode::kRender) write_record(rec);
 

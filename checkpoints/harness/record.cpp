@@ -43,7 +43,7 @@ void write_record(const Record& r) {
     fs::create_directories(dir);
     std::ofstream out(dir / (r.id + ".txt"));
     out << std::setprecision(10);
-    out << "id\t" << r.id << "\nmilestone\t" << r.milestone << "\ntitle\t" << r.title
+    out << "id\t" << r.id << "\nmilestone\t" << r.milestone << "\norder\t" << r.order << "\ntitle\t" << r.title
         << "\nstatus\t" << r.status << "\nconcepts\t" << r.concepts << "\nhas_metrics\t"
         << r.has_metrics << "\nstudent_ms\t" << r.student_ms << "\nreference_ms\t"
         << r.reference_ms << "\noutput_dir\t" << r.output_dir << "\n";
@@ -68,6 +68,7 @@ std::vector<Record> read_records(const std::string& dir) {
             const std::string key = line.substr(0, tab), v = line.substr(tab + 1);
             if (key == "id") r.id = v;
             else if (key == "milestone") r.milestone = v;
+            else if (key == "order") r.order = std::stoi(v);
             else if (key == "title") r.title = v;
             else if (key == "status") r.status = v;
             else if (key == "concepts") r.concepts = v;
@@ -83,8 +84,9 @@ std::vector<Record> read_records(const std::string& dir) {
         }
         if (!r.id.empty()) records.push_back(r);
     }
-    std::sort(records.begin(), records.end(),
-              [](const Record& a, const Record& b) { return a.id < b.id; });
+    std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) {
+        return a.milestone != b.milestone ? a.milestone < b.milestone : a.order < b.order;
+    });
     return records;
 }
 

@@ -13,6 +13,7 @@ namespace cp {
 
 struct Record {
     std::string id, milestone, title;
+    int order = 0;  // position in its milestone's list: the order of the lesson
     std::string status;    // pass, fail, or crashed (the process never finished the checkpoint)
     std::string concepts;  // comma-separated concept tags of the findings
     bool has_metrics = false;
@@ -25,6 +26,6 @@ struct Record {
 };
 
 void write_record(const Record& r);  // into $RASTER_RESULTS_DIR (default: checkpoint_results)
-std::vector<Record> read_records(const std::string& dir);  // sorted by id
+std::vector<Record> read_records(const std::string& dir);  // sorted by milestone, then order
 
 }  // namespace cp

@@ -1,14 +1,14 @@
-// Prints the table that ends `make check` (every checkpoint's verdict, image error and render
-// time, yours against the reference) and writes the same data as JSON.
+// `make check` and `make check-mN`: runs the student's checkpoints with CTest, then prints the
+// table that ends the run (every checkpoint's verdict, image error and render time, yours
+// against the reference) and writes the same data as JSON and as an HTML page with every
+// failure's findings and pictures.
 //
-//   checkpoint_summary <results-dir> <json-out> [expected-count]
+//   checkpoint_summary <ctest> <build-dir> <label-regex>
 //
-// Beside the JSON it writes an HTML page (same name, .html) with every checkpoint's verdict,
-// numbers and, for failures, the actual, expected and diff pictures side by side.
-//
-// expected-count is how many checkpoints were run; fewer records than that means some
-// process never started (a build failure), which the table says.
+// Exit status: 0 when every checkpoint passed, 1 otherwise.
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -108,11 +108,36 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 3) {
-        std::cerr << "usage: checkpoint_summary <results-dir> <json-out> [expected-count]\n";
+    if (argc != 4) {
+        std::cerr << "usage: checkpoint_summary <ctest> <build-dir> <label-regex>\n";
         return 2;
     }
-    const auto records = cp::read_records(argv[1]);
+    const std::filesystem::path build = argv[2];
+    // Each milestone's student checkpoints run in their own folder and leave one record each.
+    std::vector<std::filesystem::path> run_dirs;
+    for (const auto& entry : std::filesystem::directory_iterator(build / "checkpoints" / "run")) {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_directory() && name.size() > 8 && name.substr(name.size() - 8) == "_student") {
+            run_dirs.push_back(entry.path());
+        }
+    }
+    for (const auto& dir : run_dirs) {  // forget the previous run: its records and pictures
+        std::filesystem::remove_all(dir / "checkpoint_results");
+        std::filesystem::remove_all(dir / "checkpoint_output");
+    }
+    const std::string command = std::string("\"") + argv[1] + "\" --test-dir \"" + build.string() + "\" -L '" +
+                                argv[3] + "' --output-on-failure";
+    const int ctest_status = std::system(command.c_str());
+
+    std::vector<cp::Record> records;
+    for (const auto& dir : run_dirs) {
+        for (cp::Record& r : cp::read_records((dir / "checkpoint_results").string())) records.push_back(std::move(r));
+    }
+    std::sort(records.begin(), records.end(), [](const cp::Record& a, const cp::Record& b) {
+        return a.milestone != b.milestone ? a.milestone < b.milestone : a.order < b.order;
+    });
+    const std::string json_path = (build / "check_results.json").string();
+
     int passed = 0, failed = 0, crashed = 0;
 
     std::cout << "\n"
@@ -120,7 +145,7 @@ int main(int argc, char** argv) {
               << std::right << std::setw(12) << "px differ" << std::setw(10) << "mean err"
               << std::setw(11) << "your ms" << std::setw(11) << "ref ms" << "  concept\n"
               << std::string(100, '-') << "\n";
-    std::ofstream json(argv[2]);
+    std::ofstream json(json_path);
     json << "{\n  \"checkpoints\": [\n";
     for (std::size_t i = 0; i < records.size(); ++i) {
         const cp::Record& r = records[i];
@@ -171,15 +196,18 @@ int main(int argc, char** argv) {
                   << "    cd checkpoints/run/" << r.milestone << "_student && ../../checkpoints_" << r.milestone << " "
                   << r.id << "\n";
     }
-    if (argc > 3) {
-        const long expected = std::stol(argv[3]);
-        if (static_cast<long>(records.size()) < expected) {
-            std::cout << expected - static_cast<long>(records.size())
-                      << " checkpoint(s) left no result: did the build fail?\n";
-        }
-    }
-    const std::string html = std::filesystem::path(argv[2]).replace_extension(".html").string();
+    const std::string html = (build / "check_results.html").string();
     write_html(records, html);
-    std::cout << "This table is also in " << argv[2] << ", and with every failure's pictures in\n  " << html << "\n";
+    std::cout << "This table is also in " << json_path << ",\nand with every failure's findings and pictures in " << html
+              << "\n";
+    if (records.empty()) {
+        std::cout << "No checkpoint left a result: did the build fail? (CTest said " << ctest_status << ")\n";
+        return 1;
+    }
+    if (failed + crashed > 0 || ctest_status != 0) {
+        std::cout << "\n" << failed + crashed << " checkpoint(s) to fix: start with the first one above.\n";
+        return 1;
+    }
+    std::cout << "\nAll checkpoints pass.\n";
     return 0;
 }

@@ -74,7 +74,19 @@ Scene octant_scene(int octant) {
 }
 
 std::vector<Scene> make_scenes() {
-    std::vector<Scene> all;
+    std::vector<Scene> all;  // in the order of the lesson's TODOs
+    {
+        Scene s;
+        s.id = "m1.outcodes";
+        s.title = "Cohen-Sutherland outcodes of every pixel center";
+        s.hint = "TOP is y < ymin (the top of the screen, since y grows downward); the border "
+                 "itself is inside; a point can be both LEFT and TOP.";
+        s.width = s.height = 48;
+        s.kind = Kind::kOutcodes;
+        s.viewport = {12.5, 16.5, 35.5, 31.5};  // borders through pixel centers
+        all.push_back(s);
+    }
+
     for (int octant = 1; octant <= 8; ++octant) all.push_back(octant_scene(octant));
 
     {
@@ -171,18 +183,6 @@ std::vector<Scene> make_scenes() {
         s.lines.push_back(line({64, 64}, {64 + 40 * std::cos(0.65), 64 + 40 * std::sin(0.65)}, cyan));
         all.push_back(s);
     }
-    {
-        Scene s;
-        s.id = "m1.outcodes";
-        s.title = "Cohen-Sutherland outcodes of every pixel center";
-        s.hint = "TOP is y < ymin (the top of the screen, since y grows downward); the border "
-                 "itself is inside; a point can be both LEFT and TOP.";
-        s.width = s.height = 48;
-        s.kind = Kind::kOutcodes;
-        s.viewport = {12.5, 16.5, 35.5, 31.5};  // borders through pixel centers
-        all.push_back(s);
-    }
-
     // Clipping against a viewport smaller than the image. The viewport's sides are not on
     // pixel centers, so an off-by-one in the clip shows up as a wrong coordinate.
     const Box vp{10.25, 12.75, 53.5, 50.0};
