@@ -79,6 +79,16 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         html << "<td>" << html_escape(r.concepts) << "</tr>\n";
     }
     html << "</table>\n";
+    bool any_measure = false;
+    for (const cp::Record& r : records) {
+        for (const auto& [name, v] : r.measures) {
+            if (!any_measure) html << "<h2>Measured error against run time</h2>\n<table><tr><th>checkpoint<th>measure<th>value<th>your ms<th>reference ms</tr>\n";
+            any_measure = true;
+            html << "<tr><td>" << html_escape(r.id) << "<td>" << html_escape(name) << "<td>" << std::setprecision(4) << v
+                 << "<td>" << std::setprecision(3) << r.student_ms << "<td>" << r.reference_ms << "</tr>\n";
+        }
+    }
+    if (any_measure) html << "</table>\n";
     for (const cp::Record& r : records) {
         if (r.status == "pass") continue;
         html << "<h2 id=\"" << html_escape(r.id) << "\">" << html_escape(r.id) << ": " << html_escape(r.title)
@@ -187,8 +197,21 @@ int main(int argc, char** argv) {
     json << "  ],\n  \"passed\": " << passed << ",\n  \"failed\": " << failed
          << ",\n  \"crashed\": " << crashed << "\n}\n";
 
-    std::cout << std::string(100, '-') << "\n"
-              << passed << " passed, " << failed + crashed << " failed" << "\n";
+    std::cout << std::string(100, '-') << "\n";
+    // Numbers some checkpoints measure beside their verdict, against the render time: for
+    // anti-aliasing, the coverage error against the exact area for each sample count.
+    bool any_measure = false;
+    for (const cp::Record& r : records) {
+        for (const auto& [name, v] : r.measures) {
+            if (!any_measure) std::cout << "measured error against run time:\n";
+            any_measure = true;
+            std::cout << "  " << std::left << std::setw(26) << r.id << std::right << name << " " << std::setprecision(4)
+                      << v << "   your " << std::setprecision(3) << r.student_ms << " ms, reference " << r.reference_ms
+                      << " ms\n";
+        }
+    }
+    if (any_measure) std::cout << std::string(100, '-') << "\n";
+    std::cout << passed << " passed, " << failed + crashed << " failed" << "\n";
     for (const cp::Record& r : records) {
         if (r.status != "crashed") continue;
         std::cout << r.id << " crashed or ran out of time before finishing. To see why, run it alone\n"
