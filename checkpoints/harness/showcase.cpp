@@ -53,7 +53,7 @@ int showcase(const std::vector<ShowItem>& items, const std::string& out_dir, con
                       << std::setprecision(3) << seconds * 1e3 << "  " << png.string() << "\n";
             html << "<tr><td><b>" << item.id << "</b><br>" << item.title << "<td><img src=\"" << item.id
                  << ".png\"><td><img src=\"" << fs::absolute(expected_path).string() << "\"><td>" << differ
-                 << " px differ<br>mean error " << mae << "<br>PSNR " << psnr << "<td>" << std::setprecision(3)
+                 << " px differ<br>mean error " << mae << "<br>PSNR " << psnr << "<td>" << std::fixed << std::setprecision(3)
                  << seconds * 1e3 << " ms</tr>\n";
         } catch (const std::exception& e) {
             std::cout << std::left << std::setw(26) << item.id << " failed: " << e.what() << "\n";
