@@ -22,11 +22,6 @@ namespace cp {
 
 namespace {
 
-std::string env_or(const char* name, const std::string& fallback) {
-    const char* v = std::getenv(name);
-    return v && *v ? std::string(v) : fallback;
-}
-
 enum class Mode { kAll, kRender, kJudge };
 
 Mode mode_from_env() {

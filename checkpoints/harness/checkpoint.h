@@ -105,6 +105,26 @@ const Scene& find_scene(const std::vector<Scene>& all, const std::string& id) {
     throw std::out_of_range("no scene named " + id);
 }
 
+// The suite of a milestone whose scenes have id, title and hint: one checkpoint per scene, in
+// the scenes' order.
+template <typename Scene>
+Suite make_suite(std::string milestone, const std::vector<Scene>& (*scenes)(),
+                 Artifacts (*render_student)(const std::string&), Artifacts (*render_reference)(const std::string&),
+                 Judgement (*judge)(const std::string&, const Artifacts&)) {
+    Suite s;
+    s.milestone = std::move(milestone);
+    for (const Scene& scene : scenes()) s.ids.push_back(scene.id);
+    s.title = [scenes](const std::string& id) { return find_scene(scenes(), id).title; };
+    s.hint = [scenes](const std::string& id) { return find_scene(scenes(), id).hint; };
+    s.render_student = render_student;
+    s.render_reference = render_reference;
+    s.judge = judge;
+    return s;
+}
+
+// The value of environment variable `name`, or `fallback` when it is unset or empty.
+std::string env_or(const char* name, const std::string& fallback);
+
 // Helpers shared by renderers and judges.
 double time_best_of(const std::function<void()>& fn);  // seconds; a few runs for tiny scenes
 std::string expected_png_path(const std::string& milestone, const std::string& id);

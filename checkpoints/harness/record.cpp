@@ -1,5 +1,7 @@
 #include "harness/record.h"
 
+#include "harness/checkpoint.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -38,8 +40,7 @@ void get_metric(raster::ImageMetrics& m, const std::string& key, const std::stri
 }  // namespace
 
 void write_record(const Record& r) {
-    const char* env = std::getenv("RASTER_RESULTS_DIR");
-    const fs::path dir = env && *env ? env : "checkpoint_results";
+    const fs::path dir = env_or("RASTER_RESULTS_DIR", "checkpoint_results");
     fs::create_directories(dir);
     std::ofstream out(dir / (r.id + ".txt"));
     out << std::setprecision(10);

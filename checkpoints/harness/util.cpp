@@ -10,6 +10,11 @@ namespace fs = std::filesystem;
 
 namespace cp {
 
+std::string env_or(const char* name, const std::string& fallback) {
+    const char* v = std::getenv(name);
+    return v && *v ? std::string(v) : fallback;
+}
+
 double time_best_of(const std::function<void()>& fn) {
     // One run is enough for anything slow; tiny scenes are repeated (up to 5 runs or about
     // 50 ms) and the fastest run is kept, which is the figure least disturbed by the machine.
@@ -26,10 +31,7 @@ double time_best_of(const std::function<void()>& fn) {
 }
 
 std::string expected_png_path(const std::string& milestone, const std::string& id) {
-    const fs::path dir = [] {
-        const char* v = std::getenv("RASTER_EXPECTED_DIR");
-        return v && *v ? std::string(v) : std::string(RASTER_DEFAULT_EXPECTED_DIR);
-    }();
+    const fs::path dir = env_or("RASTER_EXPECTED_DIR", RASTER_DEFAULT_EXPECTED_DIR);
     return (dir / milestone / (id + ".png")).string();
 }
 

@@ -8,18 +8,7 @@
 
 namespace {
 
-cp::Suite make_suite() {
-    cp::Suite s;
-    s.milestone = "m1";
-    for (const m1cp::Scene& scene : m1cp::scenes()) s.ids.push_back(scene.id);
-    s.title = [](const std::string& id) { return m1cp::scene(id).title; };
-    s.hint = [](const std::string& id) { return m1cp::scene(id).hint; };
-    s.render_student = m1cp::student::render;
-    s.render_reference = m1cp::reference::render;
-    s.judge = m1cp::judge;
-    return s;
-}
-
-[[maybe_unused]] const bool registered = cp::register_suite(make_suite());
+[[maybe_unused]] const bool registered = cp::register_suite(
+    cp::make_suite("m1", m1cp::scenes, m1cp::student::render, m1cp::reference::render, m1cp::judge));
 
 }  // namespace

@@ -8,18 +8,7 @@
 
 namespace {
 
-cp::Suite make_suite() {
-    cp::Suite s;
-    s.milestone = "m2";
-    for (const m2cp::Scene& scene : m2cp::scenes()) s.ids.push_back(scene.id);
-    s.title = [](const std::string& id) { return m2cp::scene(id).title; };
-    s.hint = [](const std::string& id) { return m2cp::scene(id).hint; };
-    s.render_student = m2cp::student::render;
-    s.render_reference = m2cp::reference::render;
-    s.judge = m2cp::judge;
-    return s;
-}
-
-[[maybe_unused]] const bool registered = cp::register_suite(make_suite());
+[[maybe_unused]] const bool registered = cp::register_suite(
+    cp::make_suite("m2", m2cp::scenes, m2cp::student::render, m2cp::reference::render, m2cp::judge));
 
 }  // namespace
