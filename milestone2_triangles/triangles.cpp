@@ -61,12 +61,15 @@ void fill_triangle(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c) {
 
 void fill_triangle_gradient(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c0, Color c1, Color c2) {
     // TODO 5: as fill_triangle; for a covered pixel, the weight of vertex k is the edge value
-    // of the edge opposite it divided by area2. Remember which vertices set_up swapped.
+    // of the edge opposite it divided by area2 (in floating point: integer division gives 0).
+    // Remember which vertices set_up swapped. Round each channel to nearest (raster::to_channel).
 }
 
 void fill_triangle_aa(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c, int n) {
     // TODO 6: n * n samples per pixel at (x + (i + 0.5) / n, y + (j + 0.5) / n), which are
-    // exact points of the 1/16 grid for n = 1, 2, 4, 8. Count the covered samples and blend.
+    // exact points of the 1/16 grid for n = 1, 2, 4, 8. Count the covered samples (same test,
+    // same fill rule) and blend. Loop over every pixel the vertices' box overlaps, not over
+    // bounding_box(): that one holds only the pixels whose CENTERS can be inside.
 }
 
 }  // namespace RASTER_FLAVOUR

@@ -1,6 +1,9 @@
 // Milestone 2: triangles. The functions you implement in triangles.cpp.
 //
-// Conventions (the checkpoints test every one of them):
+// Conventions. Each one below is a TESTED rule: a checkpoint draws a scene where breaking it
+// changes pixels (or numbers) and fails, naming the convention. What is marked "Advice" is
+// how the reference does it and what the lesson recommends; the checkpoints cannot see it,
+// so another correct way passes too.
 //
 //  * Pixel grid: as in milestone 1. Pixel (x, y) covers [x, x+1) x [y, y+1), row 0 at the
 //    top, y growing downward; its center is (x + 0.5, y + 0.5). Vertices are real points in
@@ -26,9 +29,13 @@
 //
 //  * Precision. Vertices are snapped to 1/16 of a pixel (kSubpixelSteps) and edge functions
 //    are evaluated exactly in 64-bit integers on that grid; see the lesson for why plain float
-//    fails far from the origin. Where scene vertices are not on the 1/16 grid, the
-//    checkpoints treat pixel centers very near an edge as ambiguous, so the exact snapping
-//    rule (nearest, ties away from zero) never decides a verdict on its own.
+//    fails far from the origin. Tested: snap() and edge() return exactly the pinned numbers,
+//    and triangles with vertices on the 1/16 grid cover exactly the pinned pixels. Where
+//    scene vertices are not on the 1/16 grid, the checkpoints treat pixel centers within 1/16
+//    pixel of an edge as ambiguous, so the exact snapping rule (nearest, ties away from zero)
+//    never decides a pixel on its own. Advice: integers inside the loop (a double fill on
+//    unsnapped vertices passes the checkpoints; the lesson says why it is still worse), and
+//    any loop order, incremental stepping or helper structure you like.
 //
 //  * Range and bad input. Triangles with a NaN or infinite coordinate, with |coordinate| >
 //    kMaxCoordinate, or with zero area (collinear or coincident vertices) draw nothing and
@@ -38,13 +45,21 @@
 //  * Barycentric coordinates. l0 = edge(v1, v2, p) / area2, l1 = edge(v2, v0, p) / area2,
 //    l2 = edge(v0, v1, p) / area2, where area2 = edge(v0, v1, v2): each is 1 at its own vertex
 //    and 0 on the opposite edge, and they sum to 1. A per-vertex color interpolates as
-//    l0 * c0 + l1 * c1 + l2 * c2 per channel, rounded to the nearest level.
+//    l0 * c0 + l1 * c1 + l2 * c2 per channel, rounded to the nearest level (not truncated).
+//    Tested exactly: every gradient checkpoint has its vertices on the 1/16 grid, where the
+//    judge knows each pixel's exact value as a ratio of integers; a channel must be that value
+//    rounded to nearest, and only where the exact value is within 0.01 of a half level (x.5)
+//    is either neighbour accepted, so float weights, stepped weights and exact integer
+//    rounding all pass.
 //
 //  * Anti-aliasing by supersampling. fill_triangle_aa takes n*n samples per pixel on a
 //    regular grid, at (x + (i + 0.5) / n, y + (j + 0.5) / n) for i, j in 0..n-1, applies the
 //    same coverage test and fill rule to each, and blends the color over the pixel with
 //    coverage = covered samples / (n * n). n is 1, 2, 4 or 8 (1, 4, 16 or 64 samples), so
-//    every sample is a point of the 1/16 grid; n = 1 is the plain fill.
+//    every sample is a point of the 1/16 grid; n = 1 is the plain fill. Samples exactly on an
+//    edge follow the top-left rule (tested with edges through samples). Every pixel with a
+//    covered sample must be written, including pixels whose CENTER is outside the triangle's
+//    box: bounding_box() is the wrong box here (the lesson, section 8, shows why).
 #pragma once
 
 #include <cstdint>
@@ -81,9 +96,11 @@ struct PixelRect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 
-// TODO 3: the pixels whose centers can be inside the triangle, clamped to the image:
-// every pixel whose center lies within the triangle's bounding box, and no pixel outside the
-// image. Must not overflow for coordinates up to kMaxCoordinate.
+// TODO 3: the pixels whose centers can be inside the triangle, clamped to the image: exactly
+// the pixels whose center lies within the vertices' range on both axes (borders included),
+// intersected with the image. Tested number for number: not a superset (such as every pixel
+// the range overlaps) and not a subset. An empty result may be any rectangle with
+// x0 >= x1 or y0 >= y1. Must not overflow for coordinates up to kMaxCoordinate.
 PixelRect bounding_box(Fixed v0, Fixed v1, Fixed v2, int width, int height);
 
 // TODO 4: fills the triangle in one color: snap, orient, bounding box, then test every pixel
@@ -95,7 +112,8 @@ void fill_triangle(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c);
 void fill_triangle_gradient(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c0, Color c1, Color c2);
 
 // TODO 6: supersampling anti-aliasing with n * n samples per pixel (n = 1, 2, 4 or 8; other
-// values draw nothing).
+// values draw nothing). Visit every pixel the triangle's box overlaps, not only the pixels of
+// bounding_box(): a sample off the center can be inside where the center is not.
 void fill_triangle_aa(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c, int n);
 
 }  // namespace RASTER_FLAVOUR

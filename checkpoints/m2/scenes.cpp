@@ -89,21 +89,24 @@ std::vector<Scene> make_scenes() {
                        {solid({4.3, 3.1}, {30.2, 8.7}, {9.6, 27.9}, kPalette[0]),
                         solid({36.1, 2.2}, {60.8, 3.9}, {59.3, 29.4}, kPalette[1]),   // right-angled-ish
                         solid({3.2, 33.3}, {61.7, 36.1}, {20.4, 42.6}, kPalette[2]),  // wide and obtuse
-                        solid({40.7, 44.1}, {44.2, 62.8}, {30.9, 61.3}, kPalette[3]),
+                        solid({40.6875, 44.125}, {44.1875, 62.8125}, {30.875, 61.3125}, kPalette[3]),  // on the 1/16 grid
                         solid({5.5, 47.25}, {22.75, 62.5}, {5.5, 62.5}, kPalette[4])});
         s.check_winding = true;
         all.push_back(s);
     }
     {
         // The same triangles as in m2.solid, half of them listed clockwise and half
-        // counter-clockwise on screen.
+        // counter-clockwise on screen. The gradient lies on a gray backdrop (two triangles
+        // drawn first), so a pixel it paints black is told apart from one it skips.
+        const Color gray{60, 60, 60};
         Scene s = make("m2.windings", "both windings give the same pixels",
                        "If the signed area is negative, swap two vertices (and their colors) "
                        "before testing: do not skip the triangle, and do not flip the fill rule.",
                        {solid({4.3, 3.1}, {9.6, 27.9}, {30.2, 8.7}, kPalette[0]),
                         solid({36.1, 2.2}, {60.8, 3.9}, {59.3, 29.4}, kPalette[1]),
                         solid({3.2, 33.3}, {20.4, 42.6}, {61.7, 36.1}, kPalette[2]),
-                        gradient({40.7, 44.1}, {30.9, 61.3}, {44.2, 62.8}, red, green, blue)});
+                        solid({29, 43}, {47, 43}, {47, 64}, gray), solid({29, 43}, {47, 64}, {29, 64}, gray),
+                        gradient({40.6875, 44.125}, {30.875, 61.3125}, {44.1875, 62.8125}, red, green, blue)});
         s.check_winding = true;
         all.push_back(s);
     }
@@ -137,10 +140,16 @@ std::vector<Scene> make_scenes() {
         all.push_back(s);
     }
     {
-        Scene s = make("m2.gradient", "per-vertex colors interpolated with barycentric coordinates",
+        // Vertices on the 1/16 grid, so every pixel's color is known exactly: l0 * c0 + l1 * c1 +
+        // l2 * c2 rounded to the nearest level. The gradient lies over a gray backdrop, so a
+        // pixel it paints black (integer division in the weights) differs from one it skips.
+        const Color gray{60, 60, 60};
+        Scene s = make("m2.gradient", "per-vertex colors interpolated with barycentric coordinates, rounded to nearest",
                        "The weight of a vertex is the edge function of the OPPOSITE edge divided by the "
-                       "doubled area: 1 at that vertex, 0 on the far edge.",
-                       {gradient({32.2, 3.7}, {60.6, 58.1}, {3.4, 52.9}, red, green, blue)});
+                       "doubled area (in floating point, not integer division): 1 at that vertex, 0 on the far "
+                       "edge. Round each channel to the nearest level; do not truncate.",
+                       {solid({0, 0}, {64, 0}, {0, 64}, gray), solid({64, 0}, {64, 64}, {0, 64}, gray),
+                        gradient({32.25, 3.75}, {60.625, 58.125}, {3.375, 52.875}, red, green, blue)});
         s.check_winding = true;
         s.demo = true;
         all.push_back(s);
@@ -243,6 +252,22 @@ std::vector<Scene> make_scenes() {
         all.push_back(s);
     }
     {
+        // Every vertex on the 4 x 4 sample grid (x + 1/8 + i/4), so edges run exactly through
+        // samples: horizontal, vertical and slanted ones, shared and outer. The top-left rule
+        // decides each of those samples, as it decides pixel centers.
+        auto q = [](double a, double b) { return Vec2{a + 0.125, b + 0.125}; };
+        const Vec2 hub = q(32, 46);
+        Scene s = make("m2.aa_edges", "16 samples per pixel with edges exactly through samples: the fill rule per sample",
+                       "A sample exactly on an edge counts only for a top or left edge, exactly as a pixel center "
+                       "does in fill_triangle: use the same coverage test for samples.",
+                       {aa(q(4, 4), q(28, 4), q(4, 28), kPalette[0], 4), aa(q(28, 4), q(28, 28), q(4, 28), kPalette[1], 4),
+                        aa(q(36, 4), q(60, 16), q(36, 28), kPalette[2], 4),
+                        aa(q(60, 16), q(60, 28), q(36, 28), kPalette[3], 4),
+                        aa(hub, q(16, 46), q(32, 34), kPalette[4], 4), aa(hub, q(32, 34), q(48, 46), kPalette[5], 4),
+                        aa(hub, q(48, 46), q(32, 60), kPalette[6], 4), aa(hub, q(32, 60), q(16, 46), kPalette[7], 4)});
+        all.push_back(s);
+    }
+    {
         Scene s = make("m2.edge_and_box", "snap(), edge() and bounding_box() on chosen inputs",
                        "snap rounds to the nearest 1/16; edge is cross(b - a, p - a) in sixteenths; the box "
                        "holds every pixel whose center is inside the vertices' range, clamped to the image.",
@@ -252,6 +277,7 @@ std::vector<Scene> make_scenes() {
                            {{4.4, 4.6}, {20.6, 4.4}, {4.6, 20.6}},     // just outside / inside
                            {{-10.2, -3.3}, {12.7, 70.1}, {80.0, 8.8}},  // clamped on all sides
                            {{30.2, 30.2}, {30.4, 30.7}, {30.3, 30.3}},  // no center inside: empty
+                           {{44.7, 44.8}, {60.3, 44.9}, {44.9, 60.2}},  // the overlapped pixels are a superset
                            {{-1e7, 5.5}, {1e7, 5.6}, {0, 1e7}}};
         for (const auto& b : s.numbers.boxes) s.tris.push_back(solid(b[0], b[1], b[2], kPalette[s.tris.size() % 8]));
         all.push_back(s);
