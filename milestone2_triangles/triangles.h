@@ -17,7 +17,8 @@
 //    positive when p lies to the right of the edge as you walk from a to b on screen, and its
 //    value at the third vertex is twice the triangle's signed area.
 //
-//  * Winding. Both windings are drawn and give identical pixels. A triangle whose signed area
+//  * Winding. Both windings are drawn and give identical pixels (a gradient pixel in the
+//    half-level tie window described below may take either accepted level in each). A triangle whose signed area
 //    is negative is first made positive by swapping two vertices; from then on p is inside
 //    when all three edge functions are >= 0, with the fill rule deciding the zeros.
 //

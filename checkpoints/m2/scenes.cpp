@@ -264,7 +264,12 @@ std::vector<Scene> make_scenes() {
                         aa(q(36, 4), q(60, 16), q(36, 28), kPalette[2], 4),
                         aa(q(60, 16), q(60, 28), q(36, 28), kPalette[3], 4),
                         aa(hub, q(16, 46), q(32, 34), kPalette[4], 4), aa(hub, q(32, 34), q(48, 46), kPalette[5], 4),
-                        aa(hub, q(48, 46), q(32, 60), kPalette[6], 4), aa(hub, q(32, 60), q(16, 46), kPalette[7], 4)});
+                        aa(hub, q(48, 46), q(32, 60), kPalette[6], 4), aa(hub, q(32, 60), q(16, 46), kPalette[7], 4),
+                        // Top edge at y = 4.625 and left edge at x = 66.625: row 4 and column 66
+                        // hold no center of the triangle (bounding_box() leaves them out), but
+                        // half of their samples are inside.
+                        aa(q(66.5, 4.5), q(90.25, 4.5), q(66.5, 28.25), white, 4)});
+        s.width = 96;
         all.push_back(s);
     }
     {
