@@ -386,6 +386,8 @@ std::string str_exact(const double v[3]) {
 void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image& img, cp::Judgement& j) {
     const std::string topic = generic_topic(s.id);
     Tally missing{topic, "inside a triangle are not filled"};
+    Tally missing_gradient{topic, "inside a gradient triangle were left as they were: fill_triangle_gradient did not "
+                                  "draw them"};
     Tally extra{topic, "outside every triangle are filled"};
     Tally rule{"fill rule", "have their center exactly on an edge and are decided wrongly (top and left edges include "
                             "such centers, bottom and right edges exclude them)"};
@@ -446,7 +448,7 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
             } else if (e.top < 0) {
                 extra.add(x, y);
             } else if (got == e.under) {
-                (e.in_last ? last_row : missing).add(x, y);
+                (e.in_last ? last_row : gradient_top ? missing_gradient : missing).add(x, y);
             } else if (gradient_top) {
                 colors.add(x, y, " is " + str(got) + ", expected " + str(e.want) +
                                      (e.gradient_exact ? " (exact " + str_exact(e.exact) + ", rounded to nearest)" : ""));
@@ -461,24 +463,38 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
     for (int y = 0; y < s.height && blank; ++y) {
         for (int x = 0; x < s.width && blank; ++x) blank = img.at(x, y) == raster::colors::black;
     }
-    const long long wrong = missing.count + rule.count + last_row.count + colors.count + aa_wrong.count +
+    const long long wrong = missing.count + missing_gradient.count + rule.count + last_row.count + colors.count + aa_wrong.count +
                             aa_unwritten.count + aa_box.count + aa_rule.count + aa_set.count;
     if (blank && wrong > 0) {
-        j.findings.push_back({"coverage", "nothing is drawn, but " + std::to_string(wrong) + " pixels should be"});
+        // Name the functions this scene calls: one of them (or all) is still a stub.
+        bool solid = false, gradient = false, aa = false;
+        for (const Tri& t : s.tris) {
+            aa |= t.aa > 0;
+            gradient |= t.aa == 0 && t.gradient;
+            solid |= t.aa == 0 && !t.gradient;
+        }
+        std::string calls;
+        for (const auto& [used, name] : {std::pair{solid, "fill_triangle (TODO 4)"},
+                                         std::pair{gradient, "fill_triangle_gradient (TODO 5)"},
+                                         std::pair{aa, "fill_triangle_aa (TODO 6)"}}) {
+            if (used) calls += (calls.empty() ? "" : ", ") + std::string(name);
+        }
+        j.findings.push_back({"coverage", "nothing is drawn, but " + std::to_string(wrong) +
+                                              " pixels should be; this scene draws with " + calls});
         return;
     }
     // Missing pixels only in last rows/columns point at the bounding box; mixed with others,
     // they are ordinary misses. Likewise unwritten anti-aliased pixels only outside the center
     // boxes point at the box of fill_triangle_aa.
-    if (missing.count > 0 && last_row.count > 0) {
-        missing.count += last_row.count;
+    if (missing.count + missing_gradient.count > 0 && last_row.count > 0) {
+        (missing.count > 0 ? missing : missing_gradient).count += last_row.count;
         last_row.count = 0;
     }
     if (aa_unwritten.count > 0 && aa_box.count > 0) {
         aa_unwritten.count += aa_box.count;
         aa_box.count = 0;
     }
-    for (const Tally* t : {&rule, &aa_rule, &last_row, &aa_box, &missing, &extra, &colors, &aa_unwritten, &aa_set, &aa_wrong}) {
+    for (const Tally* t : {&rule, &aa_rule, &last_row, &aa_box, &missing, &missing_gradient, &extra, &colors, &aa_unwritten, &aa_set, &aa_wrong}) {
         t->report(j);
     }
 }
