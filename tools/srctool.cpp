@@ -19,6 +19,10 @@
 //   summary: one line describing the bug
 //   must_fail: checkpoint ids that must catch it
 //   says: the concept tag the failing checkpoint must name
+//   lesson: (optional) the lesson section to reread, as text of its heading ("TODO 3: Bresenham")
+//   fix: (optional) one sentence: what the right code does
+//   (summary, lesson and fix feed the known-bug diagnosis and the lesson's troubleshooting
+//   gallery: see checkpoints/harness/diagnosis.h and checkpoints/bug_tool.cpp)
 //   @@ find
 //   ...exact lines from the source...
 //   @@ replace

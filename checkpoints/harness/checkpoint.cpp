@@ -12,6 +12,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "harness/diagnosis.h"
 #include "harness/record.h"
 #include "raster/io.h"
 #include "raster/timer.h"
@@ -282,6 +283,10 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
             std::cout << "    ... and " << findings.size() - shown << " more\n";
         }
         std::cout << "  hint: " << suite.hint(id) << "\n";
+        if (!expected.empty() && main_it != student.images.end()) {
+            rec.diagnosis = diagnosis_for(suite.milestone, id, main_it->second, expected);
+            if (!rec.diagnosis.empty()) std::cout << "  known bug: " << rec.diagnosis << "\n";
+        }
         rec.hint = suite.hint(id);
         for (const Finding& f : findings) rec.findings.push_back("[" + f.topic + "] " + f.message);
     }

@@ -53,6 +53,7 @@ void write_record(const Record& r) {
     for (const auto& [name, v] : r.measures) out << "measure." << name << "\t" << v << "\n";
     for (const std::string& f : r.findings) out << "finding\t" << f << "\n";
     if (!r.hint.empty()) out << "hint\t" << r.hint << "\n";
+    if (!r.diagnosis.empty()) out << "diagnosis\t" << r.diagnosis << "\n";
 }
 
 std::vector<Record> read_records(const std::string& dir) {
@@ -82,6 +83,7 @@ std::vector<Record> read_records(const std::string& dir) {
             else if (key.rfind("measure.", 0) == 0) r.measures[key.substr(8)] = std::stod(v);
             else if (key == "finding") r.findings.push_back(v);
             else if (key == "hint") r.hint = v;
+            else if (key == "diagnosis") r.diagnosis = v;
         }
         if (!r.id.empty()) records.push_back(r);
     }

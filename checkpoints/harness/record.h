@@ -23,6 +23,7 @@ struct Record {
     std::map<std::string, double> measures;  // see Judgement::measures
     std::vector<std::string> findings;       // "[topic] message", as printed
     std::string hint;
+    std::string diagnosis;  // "your picture matches what happens ..." (see diagnosis.h), or empty
 };
 
 void write_record(const Record& r);  // into $RASTER_RESULTS_DIR (default: checkpoint_results)

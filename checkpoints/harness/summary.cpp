@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 
+#include "harness/diagnosis.h"
 #include "harness/record.h"
 
 namespace {
@@ -99,6 +100,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
             html << "</ul>\n";
         }
         if (!r.hint.empty()) html << "<p><b>hint:</b> " << html_escape(r.hint) << "</p>\n";
+        if (!r.diagnosis.empty()) html << "<p><b>known bug:</b> " << html_escape(r.diagnosis) << "</p>\n";
         if (r.output_dir.empty()) {
             html << "<p>No pictures: the checkpoint crashed or ran out of time. Run it alone to see why.</p>\n";
             continue;
@@ -113,6 +115,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         }
         html << "</p>\n";
     }
+    html << cp::diagnosis_footer_html(records);
 }
 
 }  // namespace
@@ -191,7 +194,8 @@ int main(int argc, char** argv) {
         for (std::size_t k = 0; k < r.findings.size(); ++k) {
             json << (k ? ", " : "") << "\"" << json_escape(r.findings[k]) << "\"";
         }
-        json << "], \"hint\": \"" << json_escape(r.hint) << "\", \"pictures\": \"" << json_escape(r.output_dir) << "\"}"
+        json << "], \"hint\": \"" << json_escape(r.hint) << "\", \"diagnosis\": \"" << json_escape(r.diagnosis)
+             << "\", \"pictures\": \"" << json_escape(r.output_dir) << "\"}"
              << (i + 1 < records.size() ? "," : "") << "\n";
     }
     json << "  ],\n  \"passed\": " << passed << ",\n  \"failed\": " << failed
