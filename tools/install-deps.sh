@@ -4,7 +4,7 @@
 # everything is already there.
 set -euo pipefail
 
-packages=(cmake make g++ pkg-config catch2 libstb-dev "$@")
+packages=(cmake make g++ pkg-config catch2 libstb-dev bubblewrap procps "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
