@@ -221,14 +221,17 @@ std::vector<Scene> make_scenes() {
                         solid({2.5, 60.5}, {62.5, 60.5}, {32.5, 60.5}, red),  // flat, on centers
                         gradient({50, 40}, {55, 45}, {60, 50}, red, green, blue),
                         solid({6.3, 8.1}, {26.9, 12.2}, {14.4, 30.7}, kPalette[1])}));
-    all.push_back(make("m2.nonfinite", "NaN, infinite and out-of-range vertices draw nothing",
+    all.push_back(make("m2.nonfinite", "NaN, infinite and out-of-range vertices, and unsupported sample counts, draw nothing",
                        "Check std::isfinite and the coordinate range when snapping; a NaN compares false "
-                       "with everything, so range checks alone let it through.",
+                       "with everything, so range checks alone let it through. fill_triangle_aa draws nothing "
+                       "unless n is 1, 2, 4 or 8.",
                        {solid({kNaN, 5}, {30, 30}, {5, 30}, red), solid({5, 5}, {kInf, 5}, {5, 30}, red),
                         solid({-kInf, -kInf}, {kInf, 5}, {5, kInf}, red),
                         gradient({5, 5}, {30, kNaN}, {5, 30}, red, green, blue),
                         aa({5, 5}, {30, 5}, {kNaN, 30}, red, 4),
                         solid({1e300, 0}, {2e300, 10}, {1e300, 50}, red),  // beyond kMaxCoordinate, off to the right
+                        aa({4.5, 36.5}, {28.5, 40.5}, {8.5, 60.5}, red, 3),      // n = 3 and n = 16: not supported
+                        aa({12.5, 34.5}, {30.5, 50.5}, {4.5, 62.5}, red, 16),
                         solid({34.2, 36.6}, {61.1, 40.3}, {45.7, 60.8}, kPalette[2])}));
     {
         Scene s = make("m2.huge", "vertices at +/-1e7: clamp the bounding box, keep exact edges",
