@@ -40,7 +40,7 @@ rc=0
 sandbox() {
   rm -f "$base/results/status"
   rc=0
-  "$sandbox" --mode "$mode" --uid "$uid" --workdir "$base/work" --ro "$base/public" \
+  "$sandbox" --mode "$mode" --uid "$uid" --workdir "${work:-$base/work}" --ro "$base/public" \
     --status "$base/results/status" "$@" >"$base/out" 2>"$base/err" </dev/null || rc=$?
 }
 status_of() { sed -n "s/^$1=//p" "$base/results/status"; }
@@ -155,6 +155,12 @@ case "$case_name" in
     [ "$(grep -c '^refused: ' "$base/out")" = 4 ] || fail "not every write was refused"
     [ "$(cat "$base/secret/expected.png")" = "an expected image" ] || fail "the secret was changed"
     [ ! -e "$base/public/planted.png" ] && [ ! -e "$base/planted.png" ] || fail "a file was planted"
+    # A later command of the same uid, in another workdir, cannot reach this workdir's files.
+    mkdir "$base/work2" && cp "$base/work/hostile" "$base/work2/"
+    work=$base/work2 sandbox -- ./hostile write "$base/work/result.txt"
+    expect exited 3
+    [ "$(cat "$base/work/result.txt")" = "written by the sandboxed command" ] ||
+      fail "an earlier workdir was changed by a later command"
     ;;
   fake)  # exit(0) with fake output: the caller sees exactly that; a fake result line and a
          # rewritten status file do not change the real result
