@@ -45,10 +45,11 @@ void draw_line(Image& img, Vec2 a, Vec2 b, Color c) {
 }
 
 void draw_line_aa(Image& img, Vec2 a, Vec2 b, Color c) {
-    // TODO 5: Xiaolin Wu. Swap x and y for steep lines, order the endpoints by x, and for
-    // every column whose center lies between them (and inside the image) split the coverage
-    // between the two pixels whose centers straddle the line. Check rows before converting
-    // them to int: far from the image they can be as large as 1e300.
+    // TODO 5: Xiaolin Wu. Swap x and y for steep lines (|dy| > |dx|: at exactly 45 degrees x
+    // stays the major axis), order the endpoints by x, and for every column whose center lies
+    // between them (and inside the image) split the coverage between the two pixels whose
+    // centers straddle the line. A zero-length line has slope 0, not 0 / 0. Check rows before
+    // converting them to int: far from the image they can be as large as 1e300.
 }
 
 }  // namespace RASTER_FLAVOUR

@@ -96,6 +96,11 @@ struct Plan {
         double coverage;
     };
     std::vector<Aa> aa_expected;  // Wu interior pixels with their exact coverage
+    bool aa_diagonal = false;     // Wu, |dx| == |dy| != 0: x is the major axis (lines.h)
+    // Wu, zero length on a column center: the rule covers that column, so one of these (the
+    // nearer pixel, or either at an exact tie) must be lit, whatever the endpoint weighting.
+    std::vector<Pix> aa_zero_length;
+    bool aa_zero_length_center = false;  // ... and the point is a pixel center
 };
 
 Vec2 snapped_center(Vec2 p) { return {std::floor(p.x) + 0.5, std::floor(p.y) + 0.5}; }
@@ -184,6 +189,16 @@ void plan_band(Plan& plan, Vec2 c0, Vec2 c1, int w, int h) {
 // line, measured along the minor axis". Interior columns are exact; the end columns (and one
 // beyond each end, for implementations that add Wu's endpoint weighting) are lenient.
 void plan_aa(Plan& plan, Vec2 a, Vec2 b, int w, int h) {
+    plan.aa_diagonal = std::abs(b.y - a.y) == std::abs(b.x - a.x) && a.x != b.x;
+    if (a.x == b.x && a.y == b.y && a.x - 0.5 == std::floor(a.x - 0.5)) {
+        const double t = a.y - 0.5, row = std::floor(t), f = t - row;
+        const int column = int(a.x - 0.5);
+        for (double r : {row, row + 1}) {
+            const bool nearer = r == row ? f <= 0.5 : f >= 0.5;
+            if (nearer && column >= 0 && column < w && r >= 0 && r < h) plan.aa_zero_length.push_back({column, int(r)});
+        }
+        plan.aa_zero_length_center = f == 0;
+    }
     const bool steep = std::abs(b.y - a.y) > std::abs(b.x - a.x);
     if (steep) {
         std::swap(a.x, a.y);
@@ -250,6 +265,7 @@ struct Checker {
     }
 
     std::vector<int> claims;  // per pixel: how many lines may draw it (or expect it dark)
+    bool zero_length_center_drawn = false;  // a zero-length Wu line at a pixel center is drawn
 
     int& claim(Pix p) { return claims[std::size_t(p.y) * img.width() + p.x]; }
 
@@ -280,6 +296,11 @@ struct Checker {
             add("stray pixels",
                 std::to_string(strays) + " pixel(s) are drawn where no line passes within half a "
                 "pixel of their center, e.g. " + first);
+        }
+        for (const Plan& plan : plans) {
+            if (plan.aa_zero_length_center && !plan.aa_zero_length.empty()) {
+                zero_length_center_drawn |= lit(img, plan.aa_zero_length.front());
+            }
         }
         for (const Plan& plan : plans) check_plan(plan);
     }
@@ -380,7 +401,31 @@ struct Checker {
         const bool any_lit = std::any_of(plan.aa_expected.begin(), plan.aa_expected.end(),
                                          [&](const Plan::Aa& e) { return lit(img, e.p); });
         if (!plan.aa_expected.empty() && !any_lit) {
-            add("wu coverage", plan.name + ": the anti-aliased line is not drawn at all");
+            if (plan.aa_diagonal) {
+                add("wu major axis", plan.name + ": this exact 45-degree anti-aliased line is not drawn at all. "
+                                     "With |dx| == |dy| it is neither steep nor shallow if both tests use >; "
+                                     "lines.h makes x the major axis whenever |dx| >= |dy|");
+            } else {
+                add("wu coverage", plan.name + ": the anti-aliased line is not drawn at all");
+            }
+            return;
+        }
+        if (!plan.aa_zero_length.empty() &&
+            std::none_of(plan.aa_zero_length.begin(), plan.aa_zero_length.end(), [&](Pix p) { return lit(img, p); })) {
+            const Pix p = plan.aa_zero_length.front();
+            std::ostringstream msg;
+            msg << plan.name << ": this zero-length anti-aliased line draws nothing, but its point lies on the "
+                << "center of column " << p.x << ", so Wu's rule covers that column and pixel " << str(p)
+                << " must be lit. ";
+            if (zero_length_center_drawn && !plan.aa_zero_length_center) {
+                msg << "A zero-length line at a pixel center is drawn, so your code steps along y when |dx| == |dy|: "
+                       "lines.h makes x the major axis whenever |dx| >= |dy| (also for 45-degree and zero-length lines)";
+                add("wu major axis", msg.str());
+            } else {
+                msg << "With a == b the slope is 0 / 0 = NaN: use slope 0 when b.x == a.x, and keep x as the major "
+                       "axis (|dx| >= |dy|)";
+                add("zero length", msg.str());
+            }
             return;
         }
         for (const Plan::Aa& e : plan.aa_expected) {

@@ -207,7 +207,9 @@ std::vector<Scene> make_scenes() {
                "with no shared bit (it cuts a corner region): clip and test again.",
                {line({1, 5}, {8, 60}), line({2, 4}, {60, 9}), line({56, 2}, {62, 63}),
                 line({3, 55}, {63, 60}),
-                line({2, 30}, {40, 3}),                  // passes outside the top-left corner
+                // From the LEFT region to the TOP region, missing the corner (10.25, 12.75):
+                // no shared bit, and only a second pass on the moved endpoint shows it misses.
+                line({2, 14}, {11, 3}), line({60, 16}, {50, 4}),  // and one past the top-right corner
                 line({20, 25}, {40, 35}, yellow)});      // inside, so doing nothing fails
     clip_scene("m1.clip_one_edge", "one endpoint inside, one beyond one edge",
                "Move the outside endpoint onto the edge its outcode names: for the left edge "
@@ -261,6 +263,36 @@ std::vector<Scene> make_scenes() {
         all.push_back(s);
     }
 
+    {
+        Scene s;
+        s.id = "m1.aa_diagonal";
+        s.title = "Wu anti-aliased lines at exactly 45 degrees";
+        s.hint = "At |dx| == |dy| the line is neither steeper nor shallower: lines.h makes x the "
+                 "major axis whenever |dx| >= |dy|, so test steepness with > on one side and "
+                 "let the other branch take the tie.";
+        s.width = s.height = 48;
+        s.disjoint = true;
+        // Endpoints a quarter pixel off the centers (exact in binary, so |dx| == |dy| exactly):
+        // every column splits its coverage 3:1 between two pixels.
+        s.lines = {aa_line({2.5, 4.25}, {20.5, 22.25}), aa_line({45.5, 3.75}, {27.5, 21.75}, yellow),
+                   aa_line({3.5, 44.25}, {21.5, 26.25}, cyan), aa_line({44.5, 43.75}, {26.5, 25.75}, magenta)};
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.aa_leaving";
+        s.title = "Wu anti-aliased lines that leave the image through every side";
+        s.hint = "Where a line leaves the image, one or both of a column's two pixels are outside "
+                 "it: test the row (0 <= row < height; for steep lines the x) before each blend, "
+                 "and convert it to int only after that test.";
+        s.lines = {aa_line({30.3, 12.6}, {75.5, -9.4}),             // out through the top
+                   aa_line({-10.5, 50.3}, {40.5, 73.9}, yellow),    // out through the bottom
+                   aa_line({12.3, 20.5}, {-9.4, 75.5}, cyan),       // steep, out through the left
+                   aa_line({55.7, -8.5}, {70.2, 30.5}, magenta),    // steep, out through the right
+                   aa_line({8.5, 40.2}, {40.5, 28.7}, green)};      // inside, so doing nothing fails
+        all.push_back(s);
+    }
+
     // ---- extreme inputs: each is paired with ordinary lines, so doing nothing fails ----
     {
         Scene s;
@@ -279,15 +311,19 @@ std::vector<Scene> make_scenes() {
     {
         Scene s;
         s.id = "m1.extreme_zero_length";
-        s.title = "zero-length lines draw exactly one pixel";
+        s.title = "zero-length lines: one pixel, and Wu's rule with no length";
         s.hint = "When a and b are in the same pixel, dx = dy = 0: draw that pixel once and "
-                 "stop; no division by the length.";
+                 "stop; no division by the length. For Wu, the slope 0/0 is NaN: use 0.";
         s.width = s.height = 32;
         s.disjoint = true;
         s.lines = {line(px(5, 5), px(5, 5)),          line({0.2, 0.7}, {0.9, 0.1}, yellow),
                    line({31.9, 31.9}, {31.1, 31.2}, cyan), line({16, 16}, {16, 16}, magenta),
                    line({-3, -3}, {-3, -3}, red),     // outside: nothing
-                   aa_line(px(10, 24), px(10, 24), green)};
+                   // Anti-aliased: the rule is unchanged, so a zero-length line covers the
+                   // column whose center is its x, if any (x is the major axis: |dx| >= |dy|).
+                   aa_line(px(10, 24), px(10, 24), green),         // a pixel center: that pixel
+                   aa_line({20.5, 24.75}, {20.5, 24.75}, green),   // column 20: 0.75 and 0.25
+                   aa_line({26.25, 12.5}, {26.25, 12.5}, green)};  // on no column center: nothing
         all.push_back(s);
     }
     {
