@@ -4,7 +4,8 @@
 # everything is already there.
 set -euo pipefail
 
-packages=(cmake make g++ pkg-config catch2 libstb-dev bubblewrap procps "$@")
+packages=(cmake make g++ pkg-config catch2 libstb-dev bubblewrap procps libtinyobjloader-dev
+          libgif-dev libglm-dev nlohmann-json3-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
