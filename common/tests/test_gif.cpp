@@ -8,6 +8,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <random>
 
 #include "raster/gif.h"
 
@@ -118,5 +120,42 @@ TEST_CASE("gif: bad input is an ImageIoError, never a crash") {
     const auto size = fs::file_size(path);
     fs::resize_file(path, size / 2);
     CHECK_THROWS_AS(read_gif(path), ImageIoError);
+    fs::remove(path);
+}
+
+TEST_CASE("gif: every truncation and random corruption of a file reads or fails cleanly") {
+    const std::string path = temp_gif("fuzz");
+    write_gif(path, {gradient(24, 16), Image(24, 16, colors::red), gradient(24, 16)}, 3);
+    std::string bytes;
+    {
+        std::ifstream in(path, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    REQUIRE(bytes.size() > 100);
+    int read = 0, rejected = 0;
+    auto attempt = [&](const std::string& data) {
+        {
+            std::ofstream out(path, std::ios::binary | std::ios::trunc);
+            out.write(data.data(), static_cast<std::streamsize>(data.size()));
+        }
+        try {
+            const GifInfo info = read_gif(path);
+            CHECK(info.frames.size() == info.delays.size());
+            for (const Image& f : info.frames) CHECK((f.width() == info.width && f.height() == info.height));
+            ++read;
+        } catch (const ImageIoError&) {
+            ++rejected;
+        }
+    };
+    for (std::size_t cut = 0; cut < bytes.size(); cut += 13) attempt(bytes.substr(0, cut));
+    std::mt19937 rng(777);
+    for (int i = 0; i < 400; ++i) {
+        std::string data = bytes;
+        const int edits = 1 + static_cast<int>(rng() % 3);
+        for (int e = 0; e < edits; ++e) data[rng() % data.size()] = static_cast<char>(rng() & 255);
+        attempt(data);
+    }
+    CHECK(read > 0);
+    CHECK(rejected > 0);
     fs::remove(path);
 }
