@@ -22,7 +22,8 @@ bool clip_line(Vec2& a, Vec2& b, const Rect& r) {
     // TODO 2: Cohen-Sutherland. Accept when both outcodes are 0, reject when they share a
     // bit, otherwise move one outside endpoint onto the edge its outcode names and repeat.
     // Check for NaN or infinity first: comparisons with NaN are always false, so a NaN point
-    // looks "inside" to outcode().
+    // looks "inside" to outcode(). Put a moved coordinate exactly on its edge, and interpolate
+    // the other one from the endpoint nearer the rectangle (1e300 + 0.5 == 1e300 in double).
     return false;
 }
 
@@ -48,7 +49,8 @@ void draw_line_aa(Image& img, Vec2 a, Vec2 b, Color c) {
     // TODO 5: Xiaolin Wu. Swap x and y for steep lines (|dy| > |dx|: at exactly 45 degrees x
     // stays the major axis), order the endpoints by x, and for every column whose center lies
     // between them (and inside the image) split the coverage between the two pixels whose
-    // centers straddle the line. A zero-length line has slope 0, not 0 / 0. Check rows before
+    // centers straddle the line. A zero-length line has slope 0, not 0 / 0. Compute each
+    // column's y from the endpoint whose y is nearer the image, and check rows before
     // converting them to int: far from the image they can be as large as 1e300.
 }
 

@@ -21,6 +21,16 @@
 //    to the number of visible pixels, never to the line's full length. Where a line is
 //    clipped, snapping the clipped endpoints may shift it: its pixels must stay within
 //    1 + |slope| / 2 pixels of the ideal line (measured along the minor axis), with no gaps.
+//    Precision: that band is promised when at least one endpoint lies within 1e12 of the image
+//    along the minor axis (y for a shallow line, x for a steep one), as in (1e300, 40.5) to
+//    (-1e300, 44.5) or (-1e300, -1e300) to (62.5, 16.5). A parameter t measured from 1e300
+//    away cannot resolve a pixel (1e300 + 0.5 == 1e300 in double), so put each clipped
+//    coordinate exactly on its edge (x = xmin, never a.x + t (b.x - a.x)) and interpolate the
+//    other one from the endpoint nearer the image; draw_line_aa likewise computes each
+//    column's y from the endpoint whose y is nearer the image. When both endpoints are
+//    farther than that, as in (-1e300, -1e300) to (1e300, 1e300), no double arithmetic can
+//    place the line to the pixel: only safety is tested (no crash, no hang, no write outside
+//    the image, bounded work), not which pixels it lights.
 //
 //  * Bad input. An endpoint that is NaN or infinite draws nothing (no crash, no hang).
 //
@@ -81,7 +91,8 @@ int outcode(Vec2 p, const Rect& r);
 
 // TODO 2: clips the segment a-b to r in place. Returns false, leaving a and b unspecified,
 // when no part of the segment lies in r; otherwise true, with a and b moved along the segment
-// onto r's border where they were outside. Non-finite input returns false.
+// onto r's border where they were outside (each moved coordinate exactly on its edge; see
+// "Precision" above). Non-finite input returns false.
 bool clip_line(Vec2& a, Vec2& b, const Rect& r);
 
 // TODO 3 and 4: Bresenham's line from the pixel containing a to the pixel containing b,

@@ -101,7 +101,51 @@ struct Plan {
     // nearer pixel, or either at an exact tie) must be lit, whatever the endpoint weighting.
     std::vector<Pix> aa_zero_length;
     bool aa_zero_length_center = false;  // ... and the point is a pixel center
+    // An endpoint at least kFar away: clipping it by a parameter t along the whole segment
+    // loses every digit, so a failure gets the "precision" explanation.
+    bool far = false;
+    bool far_both = false;  // both endpoints are that far
+    bool x_major = true;    // band lines: which axis the columns of the messages are
+    // Both endpoints farther than kUnresolved from the image along the minor axis: no double
+    // arithmetic can place the line to the pixel, so lines.h promises only safety for it and
+    // its pixels are not judged.
+    bool unjudged = false;
 };
+
+constexpr double kFar = 1e15;
+
+const char* const kFarBothClipLesson =
+    "Both endpoints are far away, so the image is a tiny sliver of this segment and a parameter t "
+    "along it cannot resolve a pixel (1e300 + 0.5 == 1e300 in double). Computed as a + t (b - a), "
+    "the clipped coordinate misses the edge: for (1e300, 40.5) to (-1e300, 44.5), t = 0.5 at both "
+    "edges and x = 1e300 - 0.5 * 2e300 = 0, so both ends land on one point. Put the clipped "
+    "coordinate exactly on the edge (x = xmin, never a.x + t (b.x - a.x)) and compute only the "
+    "other one from t";
+const char* const kFarOneClipLesson =
+    "One endpoint is far away and the other near the image. Interpolated from the far endpoint, "
+    "the clipped point cancels to the wrong place (-1e300 + 1e300 * 1.0 == 0: a parameter t "
+    "measured from 1e300 away cannot resolve a pixel, since 1e300 + 0.5 == 1e300 in double). "
+    "Put the clipped coordinate exactly on the edge and interpolate the other one from the "
+    "endpoint nearer the image, with t measured from there";
+const char* const kFarWuLesson =
+    "One endpoint is at least 1e15 away: computed from it, y = a.y + gradient (x + 0.5 - a.x) "
+    "cancels to the wrong row (-1e300 + 1e300 == 0, whatever the 0.5). Compute each column's y from "
+    "the endpoint whose y is nearer the image (for a steep line, x)";
+constexpr double kUnresolved = 1e12;
+
+// How far v lies outside [0, size] (0 inside).
+double outside_by(double v, double size) { return v < 0 ? -v : v > size ? v - size : 0.0; }
+
+// Lines whose pixels lines.h does not promise (see Plan::unjudged): any pixel may be drawn.
+void plan_unjudged(Plan& plan, int w, int h) {
+    plan.unjudged = true;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            plan.candidates.push_back({x, y});
+            plan.lenient.push_back({x, y});
+        }
+    }
+}
 
 Vec2 snapped_center(Vec2 p) { return {std::floor(p.x) + 0.5, std::floor(p.y) + 0.5}; }
 
@@ -163,9 +207,16 @@ void plan_band(Plan& plan, Vec2 c0, Vec2 c1, int w, int h) {
     const double dmaj = x_major ? d.x : d.y, dmin = x_major ? d.y : d.x;
     const double slope = dmaj != 0 ? dmin / dmaj : 0;
     const double half_width = 1.0 + 0.5 * std::abs(slope);
-    const double maj0 = x_major ? c0.x : c0.y, min0 = x_major ? c0.y : c0.x;
-    const double maj1 = x_major ? c1.x : c1.y;
     const int major_size = x_major ? w : h, minor_size = x_major ? h : w;
+    plan.x_major = x_major;
+    // The minor coordinate at a column is computed from the endpoint whose minor coordinate
+    // is nearer the image: from there, (c + 0.5 - maj0) * slope is a small number computed
+    // to full precision, even when the other endpoint is 1e300 away. (From an endpoint at
+    // -1e300 the same formula cancels to 0: -1e300 + (c + 0.5 + 1e300) * 1 == 0.)
+    const bool from_c0 = outside_by(x_major ? c0.y : c0.x, minor_size) <= outside_by(x_major ? c1.y : c1.x, minor_size);
+    const Vec2 n = from_c0 ? c0 : c1;
+    const double maj0 = x_major ? n.x : n.y, min0 = x_major ? n.y : n.x;
+    const double maj1 = x_major ? (from_c0 ? c1 : c0).x : (from_c0 ? c1 : c0).y;
     const double lo = std::max(std::ceil(std::min(maj0, maj1) - 0.5), 0.0);
     const double hi = std::min(std::floor(std::max(maj0, maj1) - 0.5), major_size - 1.0);
     std::vector<std::vector<Pix>> visible;  // columns where the line is inside the image
@@ -210,8 +261,9 @@ void plan_aa(Plan& plan, Vec2 a, Vec2 b, int w, int h) {
     if (!std::isfinite(gradient)) return;
     const double first = std::ceil(a.x - 0.5), last = std::floor(b.x - 0.5);
     const double lo = std::max(first - 1, 0.0), hi = std::min(last + 1, columns - 1.0);
+    const Vec2 n = outside_by(a.y, rows) <= outside_by(b.y, rows) ? a : b;  // as in plan_band
     for (double c = lo; c <= hi; ++c) {
-        const double yc = a.y + gradient * (c + 0.5 - a.x);
+        const double yc = n.y + gradient * (c + 0.5 - n.x);
         if (!(yc > -2 && yc < rows + 2)) continue;
         const bool end_column = c <= first || c >= last;
         for (int r = std::max(0, int(std::floor(yc - 1.5))); r <= std::min(rows - 1, int(std::ceil(yc + 1.5))); ++r) {
@@ -235,6 +287,19 @@ Plan make_plan(const Segment& s, int w, int h, bool force_band) {
     plan.name = "line from " + str(s.a) + " to " + str(s.b);
     plan.color = s.color;
     if (!raster::is_finite(s.a) || !raster::is_finite(s.b)) return plan;  // draws nothing
+    {
+        const Vec2 d = s.b - s.a;
+        const bool x_major = std::abs(d.x) >= std::abs(d.y);
+        const int minor_size = x_major ? h : w;
+        const double m0 = x_major ? s.a.y : s.a.x, m1 = x_major ? s.b.y : s.b.x;
+        const double far_a = std::max(std::abs(s.a.x), std::abs(s.a.y)), far_b = std::max(std::abs(s.b.x), std::abs(s.b.y));
+        plan.far = std::max(far_a, far_b) >= kFar;
+        plan.far_both = std::min(far_a, far_b) >= kFar;
+        if (std::min(outside_by(m0, minor_size), outside_by(m1, minor_size)) > kUnresolved) {
+            plan_unjudged(plan, w, h);
+            return plan;
+        }
+    }
     if (s.aa) {
         plan_aa(plan, s.a, s.b, w, h);
         return plan;
@@ -266,6 +331,12 @@ struct Checker {
 
     std::vector<int> claims;  // per pixel: how many lines may draw it (or expect it dark)
     bool zero_length_center_drawn = false;  // a zero-length Wu line at a pixel center is drawn
+    struct FarFailure {
+        std::string topic, plain;  // the finding if other lines are wrong too
+        std::string precision;     // the finding if only far lines are wrong
+    };
+    std::vector<FarFailure> far_failures;
+    std::size_t strays_at = 0;  // where the stray-pixels finding is (or would be)
 
     int& claim(Pix p) { return claims[std::size_t(p.y) * img.width() + p.x]; }
 
@@ -292,6 +363,7 @@ struct Checker {
                 }
             }
         }
+        strays_at = j.findings.size();
         if (strays > 0) {
             add("stray pixels",
                 std::to_string(strays) + " pixel(s) are drawn where no line passes within half a "
@@ -302,7 +374,19 @@ struct Checker {
                 zero_length_center_drawn |= lit(img, plan.aa_zero_length.front());
             }
         }
+        const std::size_t before = j.findings.size();
         for (const Plan& plan : plans) check_plan(plan);
+        // A line from far away that is wrong where it crosses the image, while every ordinary
+        // line is right: that is the precision of the far endpoint, not clipping in general.
+        const bool others_fine = j.findings.size() == before;
+        for (const auto& f : far_failures) {
+            if (others_fine) {
+                // First, before the stray pixels the misplaced line also makes.
+                j.findings.insert(j.findings.begin() + std::ptrdiff_t(strays_at++), {"precision", f.precision});
+            } else {
+                add(f.topic, f.plain);
+            }
+        }
     }
 
     void check_plan(const Plan& plan) {
@@ -337,12 +421,29 @@ struct Checker {
                 return;
             }
         }
+        std::size_t drawn_columns = 0;
+        std::optional<Pix> gap;
         for (const auto& band : plan.band_columns) {
-            if (std::none_of(band.begin(), band.end(), [&](Pix p) { return lit(img, p); })) {
-                add("clipping", plan.name + ": the visible part has a gap near " + str(band[band.size() / 2]) +
-                                    "; after clipping, every column (or row) the line crosses needs a pixel");
-                return;
+            if (std::any_of(band.begin(), band.end(), [&](Pix p) { return lit(img, p); })) {
+                ++drawn_columns;
+            } else if (!gap) {
+                gap = band[band.size() / 2];
             }
+        }
+        if (gap) {
+            const std::string message = plan.name + ": the visible part has a gap near " + str(*gap) +
+                                        "; after clipping, every column (or row) the line crosses needs a pixel";
+            if (plan.far) {
+                std::ostringstream why;
+                const char* columns = plan.x_major ? " columns" : " rows";
+                why << plan.name << ": only " << drawn_columns << " of the " << plan.band_columns.size() << columns
+                    << " where it crosses the image have a pixel of it (a gap near " << str(*gap) << "). "
+                    << (plan.far_both ? kFarBothClipLesson : kFarOneClipLesson);
+                far_failures.push_back({"clipping", message, why.str()});
+            } else {
+                add("clipping", message);
+            }
+            return;
         }
         if (scene.disjoint && plan.exact) check_exact_disjoint(plan);
         check_aa(plan);
@@ -401,7 +502,11 @@ struct Checker {
         const bool any_lit = std::any_of(plan.aa_expected.begin(), plan.aa_expected.end(),
                                          [&](const Plan::Aa& e) { return lit(img, e.p); });
         if (!plan.aa_expected.empty() && !any_lit) {
-            if (plan.aa_diagonal) {
+            if (plan.far) {
+                far_failures.push_back({"wu coverage", plan.name + ": the anti-aliased line is not drawn at all",
+                                        plan.name + ": the anti-aliased line is not drawn where it crosses the image. " +
+                                            kFarWuLesson});
+            } else if (plan.aa_diagonal) {
                 add("wu major axis", plan.name + ": this exact 45-degree anti-aliased line is not drawn at all. "
                                      "With |dx| == |dy| it is neither steep nor shallow if both tests use >; "
                                      "lines.h makes x the major axis whenever |dx| >= |dy|");
@@ -444,7 +549,9 @@ struct Checker {
             msg << plan.name << ": pixel " << str(e.p) << " has intensity " << int(std::max({got.r, got.g, got.b}))
                 << ", expected about " << int(std::max({want.r, want.g, want.b})) << " (coverage "
                 << e.coverage << ")";
-            if (e.coverage < 1.0 && near(got, swapped) && std::abs(e.coverage - 0.5) > 0.05) {
+            if (plan.far) {
+                far_failures.push_back({"wu coverage", msg.str(), msg.str() + ". " + kFarWuLesson});
+            } else if (e.coverage < 1.0 && near(got, swapped) && std::abs(e.coverage - 0.5) > 0.05) {
                 msg << ". The weights look swapped: the pixel nearer the line must get 1 - f";
                 add("wu weights", msg.str());
             } else {
@@ -513,7 +620,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art) {
                                                    "clip first, so the work stays proportional to the visible pixels");
     if (main == nullptr) return j;  // the harness reports a missing or mis-sized image
     const Image& img = *main;
-    Checker check{s, img, j, {}};
+    Checker check{s, img, j, {}, false, {}};
     std::vector<Plan> plans;
     const bool has_aa = std::any_of(s.lines.begin(), s.lines.end(), [](const Segment& g) { return g.aa; });
     switch (s.kind) {

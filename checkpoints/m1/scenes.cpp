@@ -299,13 +299,36 @@ std::vector<Scene> make_scenes() {
         s.id = "m1.extreme_huge";
         s.title = "endpoints at +/-1e9 and +/-1e300";
         s.hint = "Clip in double before converting anything to int: 1e9 fits an int but "
-                 "2 * dx does not, and 1e300 fits nothing. Loop over visible pixels only.";
+                 "2 * dx does not, and 1e300 fits nothing. Loop over visible pixels only. Put "
+                 "a clipped coordinate exactly on the edge, and interpolate the other from the "
+                 "endpoint nearer the image.";
         s.lines = {line({-1e9, 20.5}, {1e9, 20.5}), line({-1e9, -1e9}, {1e9, 1e9}, yellow),
                    line({1e300, 40.5}, {-1e300, 44.5}, cyan),
                    line({-1e9, -5}, {1e9, -5}, red),  // entirely above the image
                    aa_line({-1e9, 52.25}, {1e9, 52.25}, magenta),
                    aa_line({-1e300, 58.7}, {1e300, 58.7}, green),
-                   line(px(30, 2), px(60, 12), white)};
+                   line(px(30, 2), px(60, 12), white),
+                   // One endpoint 1e300 away in both coordinates, the other inside: the line
+                   // y = x - 46 (slope 1 in double) enters the image at (46.5, 0.5).
+                   line({-1e300, -1e300}, {62.5, 16.5}, gray),
+                   aa_line({-1e300, 5e299}, {40.25, 30.5}, blue)};  // y = 30.5 - (x - 40.25) / 2
+        all.push_back(s);
+    }
+    {
+        Scene s;
+        s.id = "m1.extreme_far";
+        s.title = "lines whose endpoints are both far away in both coordinates: safe, not judged to the pixel";
+        s.hint = "Such a line must not crash, hang or write outside the image: check that the "
+                 "numbers you compute are finite (1.5e308 - -1.5e308 overflows to infinity, and "
+                 "0 * infinity is NaN) and clip before converting to int. Where it is drawn is "
+                 "not judged: a double cannot place it to the pixel.";
+        s.lines = {line({-1e300, -1e300}, {1e300, 1e300}),                // y = x
+                   line({1e300, 5e299}, {-1e300, -5e299}, yellow),       // y = x / 2
+                   line({-5e299, -1e300}, {5e299, 1e300}, cyan),         // y = 2 x
+                   line({-1.5e308, -1.5e308}, {1.5e308, 1.5e308}, magenta),  // b - a overflows
+                   aa_line({-1e300, -1e300}, {1e300, 1e300}, green),
+                   aa_line({-1.5e308, -1.5e308}, {1.5e308, 1.5e308}, red),
+                   line(px(2, 40), px(14, 60), white), line(px(40, 4), px(62, 20), yellow)};
         all.push_back(s);
     }
     {

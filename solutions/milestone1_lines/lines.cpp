@@ -40,7 +40,8 @@ bool clip_line(Vec2& a, Vec2& b, const Rect& r) {
     // TODO 2: Cohen-Sutherland. Accept when both outcodes are 0, reject when they share a
     // bit, otherwise move one outside endpoint onto the edge its outcode names and repeat.
     // Check for NaN or infinity first: comparisons with NaN are always false, so a NaN point
-    // looks "inside" to outcode().
+    // looks "inside" to outcode(). Put a moved coordinate exactly on its edge, and interpolate
+    // the other one from the endpoint nearer the rectangle (1e300 + 0.5 == 1e300 in double).
     // BEGIN SOLUTION
     if (!raster::is_finite(a) || !raster::is_finite(b)) return false;
     int code_a = outcode(a, r);
@@ -51,22 +52,26 @@ bool clip_line(Vec2& a, Vec2& b, const Rect& r) {
         if ((code_a | code_b) == 0) return true;  // both inside
         if ((code_a & code_b) != 0) return false;  // both beyond the same edge
         const int out = code_a != 0 ? code_a : code_b;
-        // The fraction t of the way from a to b where the segment meets the edge. Computing
-        // t first keeps every intermediate value near the input's size, so nothing overflows
-        // for coordinates up to about 1e300.
+        // The point p where the segment meets the edge. Its coordinate across the edge is
+        // the edge itself, exactly. The other coordinate is interpolated from the endpoint n
+        // that is nearer the rectangle in that coordinate, with t the fraction of the way
+        // from n to the far endpoint f: measured from a point 1e300 away, t could not resolve
+        // a pixel (1e300 + 0.5 == 1e300 in double). Computing t first keeps every
+        // intermediate value near the input's size, so nothing overflows up to about 1e300.
+        auto outside_by = [](double v, double lo, double hi) { return v < lo ? lo - v : v > hi ? v - hi : 0.0; };
         Vec2 p;
-        if (out & kTop) {
-            const double t = (r.ymin - a.y) / (b.y - a.y);
-            p = {a.x + t * (b.x - a.x), r.ymin};
-        } else if (out & kBottom) {
-            const double t = (r.ymax - a.y) / (b.y - a.y);
-            p = {a.x + t * (b.x - a.x), r.ymax};
-        } else if (out & kLeft) {
-            const double t = (r.xmin - a.x) / (b.x - a.x);
-            p = {r.xmin, a.y + t * (b.y - a.y)};
+        if (out & (kTop | kBottom)) {
+            const double y = (out & kTop) ? r.ymin : r.ymax;
+            const bool from_a = outside_by(a.x, r.xmin, r.xmax) <= outside_by(b.x, r.xmin, r.xmax);
+            const Vec2 n = from_a ? a : b, f = from_a ? b : a;
+            const double t = (y - n.y) / (f.y - n.y);
+            p = {n.x + t * (f.x - n.x), y};
         } else {
-            const double t = (r.xmax - a.x) / (b.x - a.x);
-            p = {r.xmax, a.y + t * (b.y - a.y)};
+            const double x = (out & kLeft) ? r.xmin : r.xmax;
+            const bool from_a = outside_by(a.y, r.ymin, r.ymax) <= outside_by(b.y, r.ymin, r.ymax);
+            const Vec2 n = from_a ? a : b, f = from_a ? b : a;
+            const double t = (x - n.x) / (f.x - n.x);
+            p = {x, n.y + t * (f.y - n.y)};
         }
         if (!raster::is_finite(p)) return false;  // the difference b - a overflowed
         if (out == code_a) {
@@ -151,7 +156,8 @@ void draw_line_aa(Image& img, Vec2 a, Vec2 b, Color c) {
     // TODO 5: Xiaolin Wu. Swap x and y for steep lines (|dy| > |dx|: at exactly 45 degrees x
     // stays the major axis), order the endpoints by x, and for every column whose center lies
     // between them (and inside the image) split the coverage between the two pixels whose
-    // centers straddle the line. A zero-length line has slope 0, not 0 / 0. Check rows before
+    // centers straddle the line. A zero-length line has slope 0, not 0 / 0. Compute each
+    // column's y from the endpoint whose y is nearer the image, and check rows before
     // converting them to int: far from the image they can be as large as 1e300.
     // BEGIN SOLUTION
     if (!raster::is_finite(a) || !raster::is_finite(b)) return;
@@ -180,8 +186,12 @@ void draw_line_aa(Image& img, Vec2 a, Vec2 b, Color c) {
             img.blend(column, row, c, coverage);
         }
     };
+    // Each column's y is computed from the endpoint whose y is nearer the image, so that a
+    // line from 1e300 far away still lands on the right rows near the other endpoint.
+    auto outside_by = [](double v, double hi) { return v < 0 ? -v : v > hi ? v - hi : 0.0; };
+    const Vec2 n = outside_by(a.y, rows) <= outside_by(b.y, rows) ? a : b;
     for (int x = static_cast<int>(first); x <= static_cast<int>(last); ++x) {
-        const double t = a.y + gradient * (x + 0.5 - a.x) - 0.5;
+        const double t = n.y + gradient * (x + 0.5 - n.x) - 0.5;
         if (!(t > -1.0 && t < rows)) continue;  // both candidate rows are off the image
         const double row = std::floor(t);
         const double f = t - row;
