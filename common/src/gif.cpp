@@ -26,42 +26,128 @@ std::uint32_t pack(Color c) {
     return (static_cast<std::uint32_t>(c.r) << 16) | (static_cast<std::uint32_t>(c.g) << 8) | c.b;
 }
 
-// The fixed palette: the 6 x 6 x 6 cube (index 36 r + 6 g + b, levels 51 apart), then 40
-// grays, 8 evenly spaced inside each of the 5 gaps between the cube's gray levels.
-std::vector<Color> fixed_palette() {
-    std::vector<Color> p;
-    for (int r = 0; r < 6; ++r)
-        for (int g = 0; g < 6; ++g)
-            for (int b = 0; b < 6; ++b)
-                p.push_back({static_cast<std::uint8_t>(51 * r), static_cast<std::uint8_t>(51 * g),
-                             static_cast<std::uint8_t>(51 * b)});
-    for (int gap = 0; gap < 5; ++gap) {
-        for (int k = 1; k <= 8; ++k) {
-            const auto v = static_cast<std::uint8_t>(51 * gap + (51 * k + 4) / 9);
-            p.push_back({v, v, v});
-        }
-    }
-    return p;
+// ---- median cut, for animations with more than 256 colors ----
+// Colors are counted in cells of 6 bits per channel (64^3 cells); each cell keeps the sum of
+// its exact colors, so a box holding a single color gets exactly that color back.
+constexpr int kCellBits = 6;
+constexpr int kCells = 1 << (3 * kCellBits);
+
+int cell_of(std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    constexpr int shift = 8 - kCellBits;
+    return ((r >> shift) << (2 * kCellBits)) | ((g >> shift) << kCellBits) | (b >> shift);
 }
 
-int sq(int v) { return v * v; }
+struct Cell {
+    int id = 0;
+    long long count = 0;
+    long long sum[3] = {0, 0, 0};
+    std::uint8_t mean(int ch) const {
+        return static_cast<std::uint8_t>((sum[ch] + count / 2) / count);
+    }
+};
 
-// Nearest color of fixed_palette(): the nearest cube color is per-channel rounding, the
-// nearest gray is the closest of the gray levels; the closer of the two is the nearest of all.
-std::uint8_t nearest_fixed(Color c, const std::vector<Color>& palette) {
-    auto level = [](int v) { return (v + 25) / 51; };
-    const int r = level(c.r), g = level(c.g), b = level(c.b);
-    int best = 36 * r + 6 * g + b;
-    int best_d = sq(c.r - 51 * r) + sq(c.g - 51 * g) + sq(c.b - 51 * b);
-    for (int i = 216; i < 256; ++i) {
-        const Color q = palette[static_cast<std::size_t>(i)];
-        const int d = sq(c.r - q.r) + sq(c.g - q.g) + sq(c.b - q.b);
-        if (d < best_d) {
-            best_d = d;
-            best = i;
+struct Box {
+    std::size_t begin, end;  // range in the cell list
+    long long count;
+    int lo[3], hi[3];        // channel ranges of the cells' mean colors
+};
+
+Box make_box(const std::vector<Cell>& cells, std::size_t begin, std::size_t end) {
+    Box box{begin, end, 0, {255, 255, 255}, {0, 0, 0}};
+    for (std::size_t i = begin; i < end; ++i) {
+        box.count += cells[i].count;
+        for (int ch = 0; ch < 3; ++ch) {
+            box.lo[ch] = std::min<int>(box.lo[ch], cells[i].mean(ch));
+            box.hi[ch] = std::max<int>(box.hi[ch], cells[i].mean(ch));
         }
     }
-    return static_cast<std::uint8_t>(best);
+    return box;
+}
+
+int widest_channel(const Box& b) {
+    int best = 0;
+    for (int ch = 1; ch < 3; ++ch)
+        if (b.hi[ch] - b.lo[ch] > b.hi[best] - b.lo[best]) best = ch;
+    return best;
+}
+
+// Up to 256 colors for the frames: boxes of cells are split at the pixel-weighted median of
+// their widest channel, the box to split next being the one with the largest
+// pixels x widest range; each box's color is the pixel-weighted mean of its colors.
+// Returns the palette and, for every cell, the index of its nearest palette color.
+std::vector<Color> median_cut(const std::vector<Image>& frames, std::vector<std::uint8_t>& cell_index) {
+    std::vector<Cell> all(kCells);
+    for (const Image& f : frames) {
+        const std::uint8_t* d = f.data();
+        for (std::size_t i = 0; i + 2 < f.size_bytes(); i += 3) {
+            Cell& c = all[static_cast<std::size_t>(cell_of(d[i], d[i + 1], d[i + 2]))];
+            ++c.count;
+            c.sum[0] += d[i];
+            c.sum[1] += d[i + 1];
+            c.sum[2] += d[i + 2];
+        }
+    }
+    std::vector<Cell> cells;
+    for (int id = 0; id < kCells; ++id) {
+        if (all[static_cast<std::size_t>(id)].count > 0) {
+            cells.push_back(all[static_cast<std::size_t>(id)]);
+            cells.back().id = id;
+        }
+    }
+    std::vector<Box> boxes{make_box(cells, 0, cells.size())};
+    while (boxes.size() < 256) {
+        std::size_t pick = boxes.size();
+        long double best = 0;
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            const Box& b = boxes[i];
+            const int ch = widest_channel(b);
+            const long double score = static_cast<long double>(b.count) * (b.hi[ch] - b.lo[ch]);
+            if (b.end - b.begin > 1 && score > best) {
+                best = score;
+                pick = i;
+            }
+        }
+        if (pick == boxes.size()) break;  // every box is a single color
+        const Box b = boxes[pick];
+        const int ch = widest_channel(b);
+        const auto first = cells.begin() + static_cast<std::ptrdiff_t>(b.begin);
+        const auto last = cells.begin() + static_cast<std::ptrdiff_t>(b.end);
+        std::sort(first, last, [ch](const Cell& x, const Cell& y) {
+            return x.mean(ch) != y.mean(ch) ? x.mean(ch) < y.mean(ch) : x.id < y.id;
+        });
+        long long running = 0;
+        std::size_t split = b.begin + 1;
+        for (std::size_t i = b.begin; i + 1 < b.end; ++i) {
+            running += cells[i].count;
+            split = i + 1;
+            if (2 * running >= b.count) break;
+        }
+        boxes[pick] = make_box(cells, b.begin, split);
+        boxes.push_back(make_box(cells, split, b.end));
+    }
+    std::vector<Color> palette;
+    for (const Box& b : boxes) {
+        long long sum[3] = {0, 0, 0};
+        for (std::size_t i = b.begin; i < b.end; ++i)
+            for (int ch = 0; ch < 3; ++ch) sum[ch] += cells[i].sum[ch];
+        auto avg = [&](int ch) { return static_cast<std::uint8_t>((sum[ch] + b.count / 2) / b.count); };
+        palette.push_back({avg(0), avg(1), avg(2)});
+    }
+    cell_index.assign(kCells, 0);
+    for (const Cell& c : cells) {
+        int best = 0, best_d = 1 << 30;
+        for (std::size_t i = 0; i < palette.size(); ++i) {
+            const Color q = palette[i];
+            const int dr = c.mean(0) - q.r, dg = c.mean(1) - q.g, db = c.mean(2) - q.b;
+            const int d = dr * dr + dg * dg + db * db;
+            if (d < best_d) {
+                best_d = d;
+                best = static_cast<int>(i);
+            }
+        }
+        cell_index[static_cast<std::size_t>(c.id)] = static_cast<std::uint8_t>(best);
+    }
+    return palette;
 }
 
 }  // namespace
@@ -83,8 +169,9 @@ void write_gif(const std::string& path, const std::vector<Image>& frames, int de
         fail(path, "delay " + std::to_string(delay_centiseconds) + " outside 0..65535 centiseconds");
     }
 
-    // Palette: exact when the frames use at most 256 colors, else the fixed one.
+    // Palette: exact when the frames use at most 256 colors, else a median cut.
     std::vector<Color> palette;
+    std::vector<std::uint8_t> cell_index;
     std::unordered_map<std::uint32_t, std::uint8_t> index_of;
     {
         std::vector<std::uint32_t> distinct;
@@ -106,7 +193,7 @@ void write_gif(const std::string& path, const std::vector<Image>& frames, int de
                 index_of[k] = static_cast<std::uint8_t>(i);
             }
         } else {
-            palette = fixed_palette();
+            palette = median_cut(frames, cell_index);
         }
     }
     const bool exact = !index_of.empty();
@@ -157,7 +244,8 @@ void write_gif(const std::string& path, const std::vector<Image>& frames, int de
                 const std::size_t o = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
                                            static_cast<std::size_t>(x));
                 const Color c{d[o], d[o + 1], d[o + 2]};
-                row[static_cast<std::size_t>(x)] = exact ? index_of.at(pack(c)) : nearest_fixed(c, palette);
+                row[static_cast<std::size_t>(x)] =
+                    exact ? index_of.at(pack(c)) : cell_index[static_cast<std::size_t>(cell_of(c.r, c.g, c.b))];
             }
             step(EGifPutLine(gif, row.data(), w), "pixels");
         }

@@ -2,11 +2,14 @@
 //
 // Palette (GIF allows at most 256 colors): the writer collects the distinct colors of all
 // frames. When there are at most 256, they become the global palette and the GIF is LOSSLESS
-// (typical for flat-shaded and wireframe frames). Otherwise every pixel becomes the nearest
-// color (squared RGB distance) of a FIXED palette: the 6 x 6 x 6 cube of levels
-// 0, 51, 102, 153, 204, 255 plus 40 grays, 8 evenly spaced in each gap between the cube's
-// grays (so gray ramps, as in anti-aliased wireframes, keep 46 levels), without dithering, so the result is deterministic and the same for every run. Gradients
-// then show bands; use PNG frames when exact pixels matter.
+// (typical for flat-shaded and aliased wireframe frames). Otherwise one global palette of 256
+// colors is chosen by MEDIAN CUT over all frames: colors are counted in cells of 6 bits per
+// channel; boxes of cells are split at the pixel-weighted median of their widest channel
+// (the box with the largest pixel count x widest range first); each palette color is the
+// pixel-weighted mean of its box, and each cell's pixels get the palette color nearest to the
+// cell's mean (squared RGB distance). No dithering, so the result is deterministic. A color
+// that covers many pixels (a background) comes back exact or nearly; smooth gradients show
+// bands: use the PNG frames when exact pixels matter.
 //
 // Every frame is a full image (no transparency, no partial rectangles); the frames keep their
 // order; each is shown for `delay_centiseconds` hundredths of a second (0..65535; browsers
