@@ -284,6 +284,7 @@ Mesh load_obj(const std::string& path) {
     const fs::file_status st = fs::status(path, ec);
     if (ec || !fs::exists(st)) fail(path, "no such file");
     if (fs::is_directory(st)) fail(path, "is a directory, not an OBJ file");
+    if (!fs::is_regular_file(st)) fail(path, "not a regular file (a device or pipe?)");
     const auto size = fs::file_size(path, ec);
     if (ec) fail(path, "cannot read its size: " + ec.message());
     if (size > static_cast<std::uintmax_t>(kMaxObjBytes)) {

@@ -305,6 +305,7 @@ TEST_CASE("obj: bad files give a clear MeshError naming the problem") {
 TEST_CASE("obj: missing files, directories and bad paths") {
     CHECK_THROWS_WITH(load_obj("/nonexistent_dir_raster/model.obj"), Catch::Contains("no such file"));
     CHECK_THROWS_WITH(load_obj(fs::temp_directory_path().string()), Catch::Contains("is a directory"));
+    if (fs::exists("/dev/zero")) CHECK_THROWS_WITH(load_obj("/dev/zero"), Catch::Contains("not a regular file"));
     const std::string path = temp_obj("bad");
     {
         std::ofstream(path) << kTriangle << "f 1 2 9\n";

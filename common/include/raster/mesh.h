@@ -50,12 +50,12 @@ inline constexpr int kMaxMeshVertices = 10'000'000;
 
 // Loads positions, polygon faces and (optional) normals. Texture coordinates, materials,
 // groups, lines and points are ignored (groups are merged into one mesh, in file order).
-// Rejected with MeshError: a missing or unreadable file, a file larger than kMaxObjBytes, no
-// faces, a face with fewer than 3 vertices or with a vertex twice, a face index of 0 or one
-// that does not fit in an int, an index outside the file's positions (or normals, texture
-// coordinates; a negative, relative index: outside those defined before it), a vertex with
-// fewer than 3 coordinates, a coordinate that is not a finite number (nan, inf, 1e999), more
-// than kMaxMeshVertices positions.
+// Rejected with MeshError: a missing or unreadable file (or a directory, device or pipe), a
+// file larger than kMaxObjBytes, no faces, a face with fewer than 3 vertices or with a vertex
+// twice, a face index of 0 or one that does not fit in an int, an index outside the file's
+// positions (or normals, texture coordinates; a negative, relative index: outside those
+// defined before it), a vertex with fewer than 3 coordinates, a coordinate that is not a
+// finite number (nan, inf, 1e999), more than kMaxMeshVertices positions.
 Mesh load_obj(const std::string& path);
 // The same, from the text of an OBJ file (tests, generated files). `mtllib` is ignored.
 Mesh load_obj_string(const std::string& text);
