@@ -221,18 +221,18 @@ TEST_CASE("obj: faces, fan triangles, relative indices, formats, groups") {
               Vec3{0, 0, 1});
         // A flat-shaded cube (one normal per face) averages to the corner directions.
         const Mesh cube = load_obj(model_path("cube"));
-        std::string text = "";
-        for (const Vec3& p : cube.positions) text += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+        std::ostringstream text;
+        for (const Vec3& p : cube.positions) text << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
         for (std::size_t f = 0; f < cube.faces.size(); ++f) {
             const Vec3 n = face_normal(cube, static_cast<int>(f));
-            text += "vn " + std::to_string(n.x) + " " + std::to_string(n.y) + " " + std::to_string(n.z) + "\n";
+            text << "vn " << n.x << ' ' << n.y << ' ' << n.z << '\n';
         }
         for (std::size_t f = 0; f < cube.faces.size(); ++f) {
-            text += "f";
-            for (int i : cube.faces[f]) text += " " + std::to_string(i + 1) + "//" + std::to_string(f + 1);
-            text += "\n";
+            text << 'f';
+            for (int i : cube.faces[f]) text << ' ' << i + 1 << "//" << f + 1;
+            text << '\n';
         }
-        const Mesh loaded = load_obj_string(text);
+        const Mesh loaded = load_obj_string(text.str());
         REQUIRE(loaded.normals.size() == 8);
         for (std::size_t i = 0; i < 8; ++i) {
             CHECK(length(loaded.normals[i] - normalize(loaded.positions[i])) < 1e-12);
