@@ -235,10 +235,29 @@ bool near(Color a, Color b, int tol) {
     return std::abs(a.r - b.r) <= tol && std::abs(a.g - b.g) <= tol && std::abs(a.b - b.b) <= tol;
 }
 
+// Sets a finding's own TODO and hint where the harness's Finding has them (cp::Finding gained
+// `hint` and `todo` while this judge was written; without them the finding is unchanged).
+template <typename F>
+void advise(F& f, const std::string& todo, const std::string& hint) {
+    if constexpr (requires { f.todo = todo; f.hint = hint; }) {
+        f.todo = todo;
+        f.hint = hint;
+    }
+}
+
+cp::Finding finding(std::string topic, std::string message, const std::string& todo = "", const std::string& hint = "") {
+    cp::Finding f;
+    f.topic = std::move(topic);
+    f.message = std::move(message);
+    advise(f, todo, hint);
+    return f;
+}
+
 // Collects up to a few example pixels of one kind of mistake into one finding.
 struct Tally {
-    Tally(std::string t, std::string w) : topic(std::move(t)), what(std::move(w)) {}
-    std::string topic, what;
+    Tally(std::string t, std::string w, std::string td = "", std::string h = "")
+        : topic(std::move(t)), what(std::move(w)), todo(std::move(td)), hint(std::move(h)) {}
+    std::string topic, what, todo, hint;
     long long count = 0;
     std::string examples;
     void add(int x, int y, const std::string& detail = "") {
@@ -248,7 +267,7 @@ struct Tally {
         }
     }
     void report(cp::Judgement& j) const {
-        if (count > 0) j.findings.push_back({topic, std::to_string(count) + " pixel(s) " + what + ", e.g. " + examples});
+        if (count > 0) j.findings.push_back(finding(topic, std::to_string(count) + " pixel(s) " + what + ", e.g. " + examples, todo, hint));
     }
 };
 
@@ -386,27 +405,48 @@ std::string str_exact(const double v[3]) {
 
 void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image& img, cp::Judgement& j) {
     const std::string topic = generic_topic(s.id);
-    Tally missing{topic, "inside a triangle are not filled"};
+    // Advice per kind of mistake; the generic topics of m2.huge, m2.degenerate and m2.nonfinite
+    // keep their scene's hint.
+    const bool plain = topic == "coverage";
+    Tally missing{topic, "inside a triangle are not filled", plain ? "TODO 4" : "",
+                  plain ? "Test every pixel center of the bounding box against the three edge functions: a center is "
+                          "in when none is negative (a zero: the fill rule decides)." : ""};
     Tally missing_gradient{topic, "inside a gradient triangle were left as they were: fill_triangle_gradient did not "
-                                  "draw them"};
-    Tally extra{topic, "outside every triangle are filled"};
+                                  "draw them", "TODO 5",
+                           "fill_triangle_gradient covers exactly the pixels fill_triangle covers: set up, bounding box, "
+                           "the same coverage test; only the color differs."};
+    Tally extra{topic, "outside every triangle are filled", plain ? "TODO 4" : "",
+                plain ? "A pixel is drawn only when its center is inside all three edges; check the signs and which "
+                        "edge function belongs to which pair of vertices." : ""};
     Tally rule{"fill rule", "have their center exactly on an edge and are decided wrongly (top and left edges include "
-                            "such centers, bottom and right edges exclude them)"};
-    Tally last_row{"bounding box", "in the last row or column of a triangle's bounding box are missing"};
-    Tally colors{"barycentric", "have the wrong interpolated color"};
-    Tally aa_wrong{"supersampling", "have the wrong coverage for their number of covered samples"};
-    Tally aa_unwritten{"supersampling", "have covered samples but fill_triangle_aa never wrote them"};
+                            "such centers, bottom and right edges exclude them)",
+               "TODO 4b", "Once the area is positive, edge a->b is top when b.y == a.y and b.x > a.x, left when "
+                          "b.y < a.y; a zero edge value counts only for those (set_up marks them, covers applies it)."};
+    Tally last_row{"bounding box", "in the last row or column of a triangle's bounding box are missing", "TODO 3",
+                   "PixelRect's ends are exclusive: x1 is one past the last column whose center is in range."};
+    Tally colors{"barycentric", "have the wrong interpolated color", "TODO 5",
+                 "The weight of vertex k is the edge value of the edge OPPOSITE it divided by area2, in floating "
+                 "point (integer division gives 0); round each channel to nearest with raster::to_channel."};
+    const std::string aa_hint = "Samples sit at (x + (i + 0.5) / n, y + (j + 0.5) / n); coverage = covered samples / "
+                                "(n * n), blended over the pixel with Image::blend.";
+    Tally aa_wrong{"supersampling", "have the wrong coverage for their number of covered samples", "TODO 6", aa_hint};
+    Tally aa_unwritten{"supersampling", "have covered samples but fill_triangle_aa never wrote them", "TODO 6", aa_hint};
     Tally aa_box{"aa bounding box",
                  "have covered samples but were never written, and their centers lie outside the triangle's "
                  "bounding_box(): that box holds the pixels whose CENTERS can be inside, but a sample off the "
                  "center reaches the pixels around it too. fill_triangle_aa must visit every pixel the "
-                 "triangle's box overlaps"};
+                 "triangle's box overlaps",
+                 "TODO 6", "Loop from floor(min / 16) to ceil(max / 16) in sixteenths on each axis, clamped to the "
+                           "image: every pixel the vertices' box overlaps, not bounding_box()."};
     Tally aa_set{"supersampling",
                  "show only the last triangle's coverage over black, as if the pixel was set instead of "
-                 "blended: use Image::blend, which mixes the color over what is already there"};
+                 "blended: use Image::blend, which mixes the color over what is already there",
+                 "TODO 6", "img.blend(x, y, c, coverage) mixes over the pixel's current color; do not set a color mixed with black."};
     Tally aa_rule{"fill rule",
                   "have samples exactly on an edge counted wrongly (the coverage matches counting every such "
-                  "sample, or none): apply the top-left rule to each sample, as to a pixel center"};
+                  "sample, or none): apply the top-left rule to each sample, as to a pixel center",
+                  "TODO 6", "Test each sample with the same covers() as a pixel center: a sample on an edge counts "
+                            "only for a top or left edge."};
     bool has_aa = false, has_gradient = false;
 
     for (int y = 0; y < s.height; ++y) {
@@ -526,8 +566,10 @@ void measure_area_error(const Scene& s, const std::vector<Shape>& shapes, const 
 // Watertightness: the triangles tile a region, so a pixel whose center is certainly inside
 // that region must be covered exactly once, and one near its outer boundary at most once.
 void judge_watertight(const Scene& s, const std::vector<Shape>& shapes, const Image& count, cp::Judgement& j) {
-    Tally twice{"fill rule", "are covered by two or more triangles (double coverage on a shared edge)"};
-    Tally gaps{"watertight", "inside the mesh are covered by no triangle (a gap on a shared edge)"};
+    const std::string rule_hint = "Two triangles see a shared edge in opposite directions: with the top-left rule exactly "
+                                  "one of them counts a center on it. Compare edge values with 0 exactly (integers).";
+    Tally twice{"fill rule", "are covered by two or more triangles (double coverage on a shared edge)", "TODO 4b", rule_hint};
+    Tally gaps{"watertight", "inside the mesh are covered by no triangle (a gap on a shared edge)", "TODO 4b", rule_hint};
     // The outer boundary: edges used by one triangle only.
     std::vector<std::pair<Vec2, Vec2>> boundary;
     auto same = [](Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; };
@@ -576,18 +618,21 @@ void judge_numbers(const Scene& s, const cp::Artifacts& art, cp::Judgement& j) {
         const auto it = art.values.find(k);
         return it == art.values.end() ? std::nan("") : it->second;
     };
+    const std::string snap_hint = "Reject NaN, infinity and |coordinate| > kMaxCoordinate first, then std::llround(x * 16) "
+                                  "for each coordinate.";
     for (std::size_t i = 0; i < s.numbers.snaps.size(); ++i) {
         const Vec2 p = s.numbers.snaps[i];
         const std::string key = "snap." + std::to_string(i) + ".";
         const bool ok = raster::is_finite(p) && std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate;
         if ((value(key + "ok") == 1) != ok) {
-            j.findings.push_back({"snap", "snap" + str(p) + " returned " + (ok ? "false" : "true") + ", expected " +
-                                              (ok ? "true" : "false (not finite, or beyond kMaxCoordinate)")});
+            j.findings.push_back(finding("snap", "snap" + str(p) + " returned " + (ok ? "false" : "true") + ", expected " +
+                                                     (ok ? "true" : "false (not finite, or beyond kMaxCoordinate)"),
+                                         "TODO 1", snap_hint));
         } else if (ok && (value(key + "x") != std::round(p.x * 16) || value(key + "y") != std::round(p.y * 16))) {
             std::ostringstream m;
             m << "snap" << str(p) << " gave (" << value(key + "x") << ", " << value(key + "y") << "), expected ("
               << std::round(p.x * 16) << ", " << std::round(p.y * 16) << ") sixteenths (nearest, not truncated)";
-            j.findings.push_back({"snap", m.str()});
+            j.findings.push_back(finding("snap", m.str(), "TODO 1", snap_hint));
         }
     }
     for (std::size_t i = 0; i < s.numbers.boxes.size(); ++i) {
@@ -603,7 +648,9 @@ void judge_numbers(const Scene& s, const cp::Artifacts& art, cp::Judgement& j) {
             m << "edge(v0, v1, v2) for vertices " << str(v[0]) << " " << str(v[1]) << " " << str(v[2]) << " gave "
               << value("edge." + std::to_string(i)) << ", expected " << double(e)
               << " = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) in sixteenths";
-            j.findings.push_back({"edge function", m.str()});
+            j.findings.push_back(finding("edge function", m.str(), "TODO 2",
+                                         "edge(a, b, p) = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x), in 64-bit "
+                                         "integers on the sixteenths."));
         }
         // Pixel x is in the box when its center x + 0.5 lies in [min x, max x] (of the snapped
         // vertices), clamped to the image.
@@ -624,7 +671,9 @@ void judge_numbers(const Scene& s, const cp::Artifacts& art, cp::Judgement& j) {
             m << "bounding_box for " << str(v[0]) << " " << str(v[1]) << " " << str(v[2]) << " gave [" << gx0 << ", "
               << gx1 << ") x [" << gy0 << ", " << gy1 << "), expected [" << x0 << ", " << x1 << ") x [" << y0 << ", "
               << y1 << ")" << (want_empty ? " (empty)" : "");
-            j.findings.push_back({"bounding box", m.str()});
+            j.findings.push_back(finding("bounding box", m.str(), "TODO 3",
+                                         "First column: ceil((min_x - 8) / 16); end: floor((max_x - 8) / 16) + 1, with a "
+                                         "floor division that rounds negative numbers down; then clamp to the image."));
         }
     }
 }
@@ -664,9 +713,13 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art) {
             }
         }
         if (!sized || differ > 0) {
-            j.findings.push_back({"winding", "listing each triangle's vertices in the other order changed " +
-                                                 std::to_string(differ) +
-                                                 " pixel(s) (see other_winding.png): both windings must give the same pixels"});
+            j.findings.push_back(finding("winding",
+                                         "listing each triangle's vertices in the other order changed " +
+                                             std::to_string(differ) +
+                                             " pixel(s) (see other_winding.png): both windings must give the same pixels",
+                                         "TODO 4a",
+                                         "If the signed area is negative, swap v1 and v2 (and, in fill_triangle_gradient, "
+                                         "their colors) before testing; do not skip the triangle or flip the fill rule."));
         }
     }
     if (!s.numbers.snaps.empty() || !s.numbers.boxes.empty()) judge_numbers(s, art, j);
