@@ -547,8 +547,9 @@ int rates(const std::vector<std::string>& args) {
     const double min_hits = std::stod(args[2]), max_wrong = std::stod(args[3]);
     Built b;
     b.lib = cp::read_bug_library(cp::bug_pictures_dir(), m, "*");
-    const cp::DiagnosisRates r = cp::measure_rates(b.lib, expected_per_picture(b));
-    std::cout << m << ": " << cp::rates_text(r) << "\n";
+    std::ostringstream details;
+    const cp::DiagnosisRates r = cp::measure_rates(b.lib, expected_per_picture(b), &details);
+    std::cout << m << ": " << cp::rates_text(r) << "\n" << details.str();
     int bad = 0;
     if (r.in_sample_hits != b.lib.rates.in_sample_hits || r.in_sample_total != b.lib.rates.in_sample_total ||
         r.loo_wrong != b.lib.rates.loo_wrong || r.loo_total != b.lib.rates.loo_total) {

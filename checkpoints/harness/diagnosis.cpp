@@ -188,7 +188,8 @@ std::vector<const BugPicture*> diagnose(const BugLibrary& lib, const std::string
     return out;
 }
 
-DiagnosisRates measure_rates(const BugLibrary& lib, const std::vector<raster::Image>& expected_per_picture) {
+DiagnosisRates measure_rates(const BugLibrary& lib, const std::vector<raster::Image>& expected_per_picture,
+                             std::ostream* log) {
     DiagnosisRates r;
     for (std::size_t i = 0; i < lib.pictures.size(); ++i) {
         const BugPicture& p = lib.pictures[i];
@@ -196,10 +197,17 @@ DiagnosisRates measure_rates(const BugLibrary& lib, const std::vector<raster::Im
         const auto same = [&](const BugPicture* q) { return q->bug == p.bug || same_symptom(q->image, p.image, expected); };
         const auto named = diagnose(lib, p.scene, p.image, expected);
         ++r.in_sample_total;
-        r.in_sample_hits += !named.empty() && same(named.front());
+        const bool hit = !named.empty() && same(named.front());
+        r.in_sample_hits += hit;
+        if (log && !hit) *log << "  miss: " << p.bug << " on " << p.scene << " named " << (named.empty() ? "nothing" : named.front()->bug) << "\n";
         const auto loo = diagnose(lib, p.scene, p.image, expected, p.bug);
         ++r.loo_total;
-        r.loo_wrong += std::any_of(loo.begin(), loo.end(), [&](const BugPicture* q) { return !same(q); });
+        for (const BugPicture* q : loo) {
+            if (same(q)) continue;
+            ++r.loo_wrong;
+            if (log) *log << "  leave-one-out: " << p.bug << " on " << p.scene << " named " << q->bug << "\n";
+            break;
+        }
     }
     return r;
 }

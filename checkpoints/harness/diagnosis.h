@@ -22,6 +22,7 @@
 // says nothing. A diagnosis is advice: it never changes a verdict.
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -111,7 +112,9 @@ bool same_symptom(const raster::Image& a, const raster::Image& b, const raster::
 
 // Measures DiagnosisRates on a library whose pictures are all loaded; `expected(scene)` gives
 // each scene's expected image.
-DiagnosisRates measure_rates(const BugLibrary& lib, const std::vector<raster::Image>& expected_per_picture);
+// With `log`, each miss and each wrong claim is written there, one line each.
+DiagnosisRates measure_rates(const BugLibrary& lib, const std::vector<raster::Image>& expected_per_picture,
+                             std::ostream* log = nullptr);
 
 // The harness's hook: for a failing checkpoint of `milestone`, the sentence that names the
 // matching known bug(s) and the lesson section to reread, or "" when none matches (or the
