@@ -14,6 +14,9 @@
 //   bug_tool gallery --update|--check <m> <repo-root> <lesson.md>
 //       The lesson's troubleshooting section (between the troubleshooting markers) and the
 //       gallery images, from the committed library alone.
+//   bug_tool named <m> <work-dir> (<file.bug> <checkpoint-program>)...
+//       End to end, as a student runs it: each bug's program on the checkpoint its gallery
+//       shows must write a record whose diagnosis names the bug; exits 1 otherwise.
 //   bug_tool rates <m> <min-hits-percent> <max-wrong-percent>
 //       Measures the diagnosis on the committed library (in-sample and leave-one-out, see
 //       DiagnosisRates); exits 1 if that is not what the index says or misses a threshold.
@@ -541,6 +544,42 @@ int gallery(const std::vector<std::string>& args) {
     return 0;
 }
 
+int named(const std::vector<std::string>& args) {
+    if (args.size() < 3 || (args.size() - 3) % 2 != 0) throw std::runtime_error("named: bad arguments");
+    const std::string m = args[1];
+    const fs::path work = fs::absolute(fs::path(args[2]) / m);
+    const cp::BugLibrary lib = cp::read_bug_library(cp::bug_pictures_dir(), m, "");
+    int checked = 0, bad = 0;
+    for (std::size_t i = 3; i + 1 < args.size(); i += 2) {
+        const BugSource src = read_bug(args[i], args[i + 1]);
+        const cp::KnownBug* k = lib.bug(src.name);
+        if (!k) {
+            std::cout << src.name << ": not in the library; run `make bug-pictures`\n";
+            ++bad;
+            continue;
+        }
+        const bool has_picture = std::any_of(lib.pictures.begin(), lib.pictures.end(), [&](const cp::BugPicture& p) {
+            return p.bug == k->name && p.scene == k->symptom_scene;
+        });
+        if (!has_picture) continue;
+        const fs::path dir = work / src.name;
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        run("cd " + shell_quote(dir.string()) + " && RASTER_RESULTS_DIR=results RASTER_OUTPUT_DIR=output timeout 60 " +
+            shell_quote(src.program.string()) + " " + shell_quote(k->symptom_scene) + " > out.log 2>&1");
+        const auto records = cp::read_records((dir / "results").string());
+        const bool ok = records.size() == 1 && records[0].diagnosis.find("(" + src.name + ")") != std::string::npos;
+        ++checked;
+        if (!ok) {
+            std::cout << src.name << " on " << k->symptom_scene << ": the record's diagnosis is '"
+                      << (records.empty() ? std::string("(no record)") : records[0].diagnosis) << "'\n";
+            ++bad;
+        }
+    }
+    std::cout << m << ": " << checked - bad << " of " << checked << " bugs named by the diagnosis on their gallery checkpoint\n";
+    return bad ? 1 : 0;
+}
+
 int rates(const std::vector<std::string>& args) {
     if (args.size() != 4) throw std::runtime_error("rates: bad arguments");
     const std::string m = args[1];
@@ -575,12 +614,14 @@ int main(int argc, char** argv) {
         if (!args.empty() && (args[0] == "update" || args[0] == "check")) return update_or_check(args[0] == "update", args);
         if (!args.empty() && args[0] == "gallery") return gallery(args);
         if (!args.empty() && args[0] == "rates") return rates(args);
+        if (!args.empty() && args[0] == "named") return named(args);
     } catch (const std::exception& e) {
         std::cerr << "bug_tool: " << e.what() << "\n";
         return 1;
     }
     std::cerr << "usage: bug_tool update|check <m> <repo-root> <lesson.md> <work-dir> <skeleton-program> (<file.bug> <program>)...\n"
                  "       bug_tool gallery --update|--check <m> <repo-root> <lesson.md>\n"
+                 "       bug_tool named <m> <work-dir> (<file.bug> <program>)...\n"
                  "       bug_tool rates <m> <min-hits-percent> <max-wrong-percent>\n";
     return 2;
 }
