@@ -27,6 +27,8 @@
 #include "m2/judge.h"
 #include "m2/render.h"
 #include "m2/scenes.h"
+#include "m3/render.h"
+#include "m3/scenes.h"
 #include "raster/compare.h"
 #include "raster/io.h"
 
@@ -45,6 +47,7 @@ std::vector<Entry> all_scenes() {
     std::vector<Entry> out;
     for (const m1cp::Scene& s : m1cp::scenes()) out.push_back({"m1", s.id, s.title, s.demo, m1cp::reference::render});
     for (const m2cp::Scene& s : m2cp::scenes()) out.push_back({"m2", s.id, s.title, s.demo, m2cp::reference::render});
+    for (const m3cp::Scene& s : m3cp::scenes()) out.push_back({"m3", s.id, s.title, s.demo, m3cp::reference::render});
     return out;
 }
 

@@ -1,0 +1,553 @@
+// Judge half of the milestone-3 checkpoints (trusted: it runs no code under test).
+//
+// The oracle is the reference solution (compiled into this library with the reference
+// flavour) plus hand-worked values for the conventions a bug typically breaks: the judge
+// compares every number the render half recorded with the reference's, within a relative
+// 1e-9, compares clipped polygons as sets of vertices (the order of the clip planes is free),
+// and then tells apart the usual mistakes (storage order, multiplication order, degrees,
+// missing divide, unflipped y, left-handed camera, near plane, clipping after the divide...).
+#include "m3/judge.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "m3/render.h"
+#include "m3/scenes.h"
+#include "raster/io.h"
+
+namespace m3cp {
+
+namespace {
+
+using Values = std::map<std::string, double>;
+
+std::string num(double v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+bool close(double a, double b, double rel = 1e-9) {
+    if (std::isnan(a) || std::isnan(b)) return false;
+    return std::abs(a - b) <= rel * std::max(1.0, std::abs(b));
+}
+
+double get(const Values& v, const std::string& key) {
+    const auto it = v.find(key);
+    return it == v.end() ? std::nan("") : it->second;
+}
+
+// Entries of a 4x4 matrix stored under `key`.
+Matrix mat(const Values& v, const std::string& key) {
+    Matrix m{};
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) m[i][j] = get(v, key + "." + std::to_string(i) + std::to_string(j));
+    }
+    return m;
+}
+
+Matrix mul(const Matrix& a, const Matrix& b) {
+    Matrix r{};
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            for (int k = 0; k < 4; ++k) r[i][j] += a[i][k] * b[k][j];
+        }
+    }
+    return r;
+}
+
+bool same(const Matrix& a, const Matrix& b, double rel = 1e-9) {
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            if (!close(a[i][j], b[i][j], rel)) return false;
+        }
+    }
+    return true;
+}
+
+std::string str(const Matrix& m) {
+    std::string s = "[";
+    for (int i = 0; i < 4; ++i) {
+        s += i ? "; " : "";
+        for (int j = 0; j < 4; ++j) s += (j ? " " : "") + num(m[i][j]);
+    }
+    return s + "]";
+}
+
+Vec3 vec3(const Values& v, const std::string& key) { return {get(v, key + ".x"), get(v, key + ".y"), get(v, key + ".z")}; }
+Vec4 vec4(const Values& v, const std::string& key) {
+    return {get(v, key + ".x"), get(v, key + ".y"), get(v, key + ".z"), get(v, key + ".w")};
+}
+bool same3(Vec3 a, Vec3 b, double rel = 1e-9) { return close(a.x, b.x, rel) && close(a.y, b.y, rel) && close(a.z, b.z, rel); }
+std::string str(Vec3 p) { return "(" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) + ")"; }
+std::string str(Vec4 p) { return "(" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) + ", " + num(p.w) + ")"; }
+
+// A polygon stored under `key`; repeated consecutive vertices are merged.
+std::vector<Vec4> polygon(const Values& v, const std::string& key) {
+    std::vector<Vec4> out;
+    const double n = get(v, key + ".n");
+    if (!(n >= 0 && n <= 32)) return out;
+    for (int i = 0; i < int(n); ++i) out.push_back(vec4(v, key + "." + std::to_string(i)));
+    return out;
+}
+
+bool same4(Vec4 a, Vec4 b, double scale) {
+    const double tol = 1e-9 * std::max(1.0, scale);
+    return std::abs(a.x - b.x) <= tol && std::abs(a.y - b.y) <= tol && std::abs(a.z - b.z) <= tol &&
+           std::abs(a.w - b.w) <= tol;
+}
+
+double scale_of(const std::vector<Vec4>& p) {
+    double s = 0;
+    for (Vec4 q : p) s = std::max({s, std::abs(q.x), std::abs(q.y), std::abs(q.z), std::abs(q.w)});
+    return s;
+}
+
+// Same vertex set (each vertex of one within tolerance of a vertex of the other), and the
+// same orientation on screen when the polygon has area.
+bool same_polygon(const std::vector<Vec4>& mine, const std::vector<Vec4>& ref) {
+    if (mine.size() < 3 || ref.size() < 3) return mine.size() < 3 && ref.size() < 3;
+    const double s = std::max(scale_of(mine), scale_of(ref));
+    auto covered = [s](const std::vector<Vec4>& a, const std::vector<Vec4>& b) {
+        for (Vec4 p : a) {
+            if (std::none_of(b.begin(), b.end(), [&](Vec4 q) { return same4(p, q, s); })) return false;
+        }
+        return true;
+    };
+    if (!covered(mine, ref) || !covered(ref, mine)) return false;
+    auto area = [](const std::vector<Vec4>& p) {
+        double a = 0;
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            const Vec4 u = p[i], w = p[(i + 1) % p.size()];
+            a += u.x / u.w * (w.y / w.w) - w.x / w.w * (u.y / u.w);
+        }
+        return a;
+    };
+    const double am = area(mine), ar = area(ref);
+    return std::abs(ar) < 1e-6 || (am > 0) == (ar > 0);
+}
+
+// A vertex outside the near plane (z < -w), allowing for rounding.
+bool beyond_near(const std::vector<Vec4>& p) {
+    const double tol = 1e-9 * std::max(1.0, scale_of(p));
+    return std::any_of(p.begin(), p.end(), [tol](Vec4 q) { return q.z + q.w < -tol || q.w <= 0; });
+}
+bool beyond_any(const std::vector<Vec4>& p) {
+    const double tol = 1e-9 * std::max(1.0, scale_of(p));
+    return std::any_of(p.begin(), p.end(), [tol](Vec4 q) {
+        return !(q.w + q.x >= -tol && q.w - q.x >= -tol && q.w + q.y >= -tol && q.w - q.y >= -tol && q.w + q.z >= -tol &&
+                 q.w - q.z >= -tol);
+    });
+}
+
+struct Ctx {
+    const Scene& s;
+    const Values& mine;
+    const Values& ref;
+    cp::Judgement& j;
+    void add(const std::string& topic, const std::string& msg) {
+        for (const cp::Finding& f : j.findings) {
+            if (f.topic == topic && f.message == msg) return;
+        }
+        j.findings.push_back({topic, msg});
+    }
+    // Compares matrix `key` with the reference's; returns false (and adds a finding) if off.
+    bool matrix(const std::string& key, const std::string& topic, const std::string& what) {
+        const Matrix a = mat(mine, key), b = mat(ref, key);
+        if (same(a, b)) return true;
+        add(topic, what + ": got " + str(a) + ", expected " + str(b));
+        return false;
+    }
+    bool point(const std::string& key, const std::string& topic, const std::string& what) {
+        const Vec3 a = vec3(mine, key), b = vec3(ref, key);
+        if (same3(a, b)) return true;
+        add(topic, what + ": got " + str(a) + ", expected " + str(b));
+        return false;
+    }
+};
+
+Matrix transpose(const Matrix& a) {
+    Matrix t{};
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) t[i][j] = a[j][i];
+    }
+    return t;
+}
+
+void judge_group(Group g, Ctx& c) {
+    const Values& v = c.mine;
+    switch (g) {
+        case Group::kMatrixOps: {
+            const Matrix a{{{1, 2, 0, 4}, {0, 1, 3, 0}, {2, 0, 1, -1}, {0, 0, 0, 1}}};
+            const Matrix b{{{0, 1, 0, 2}, {1, 0, 0, 0}, {0, 0, 2, 1}, {0, 0, 0, 1}}};
+            const Matrix ab = mat(v, "ab");
+            if (!same(ab, mul(a, b))) {
+                if (same(ab, mul(b, a))) {
+                    c.add("multiplication order", "TODO 1: your A * B equals B * A. Entry (i, j) of A * B is row i of A "
+                                                  "times column j of B");
+                } else {
+                    c.add("matrix", "TODO 1: A * B is wrong: got " + str(ab) + ", expected " + str(mul(a, b)));
+                }
+            }
+            if (!same(mat(v, "at"), transpose(a))) c.add("matrix", "TODO 1: transpose(A) is wrong: got " + str(mat(v, "at")));
+            // A * (1, 2, 3, 1) = (9, 11, 4, 1); with rows and columns exchanged: (3, 4, 9, 16).
+            const Vec4 av = vec4(v, "av");
+            if (!(close(av.x, 9) && close(av.y, 11) && close(av.z, 4) && close(av.w, 1))) {
+                if (close(av.x, 3) && close(av.y, 4) && close(av.z, 9) && close(av.w, 16)) {
+                    c.add("storage order", "TODO 1: M * v reads m[col][row]: A * (1, 2, 3, 1) gave " + str(av) +
+                                               " instead of (9, 11, 4, 1). Mat4 is m[row][col]; (M v)[r] = sum_c m[r][c] v[c], "
+                                               "so the translation is the last COLUMN");
+                } else {
+                    c.add("matrix", "TODO 1: A * (1, 2, 3, 1) gave " + str(av) + " instead of (9, 11, 4, 1)");
+                }
+            }
+            const Vec3 pt = vec3(v, "pt"), dir = vec3(v, "dir");
+            if (!same3(pt, {9, 11, 4})) c.add("matrix", "TODO 1: transform_point(A, (1, 2, 3)) gave " + str(pt) + ", expected (9, 11, 4)");
+            if (!same3(dir, {5, 11, 5})) {
+                c.add(same3(dir, {9, 11, 4}) ? "direction" : "matrix",
+                      "TODO 1: transform_direction(A, (1, 2, 3)) gave " + str(dir) +
+                          ", expected (5, 11, 5): a direction has w = 0, so the translation column must not move it");
+            }
+            break;
+        }
+        case Group::kBuilders: {
+            c.matrix("translate", "builders", "TODO 2: translate((1, -2, 3))");
+            c.matrix("scale", "builders", "TODO 2: scale((2, 3, 4))");
+            const char* names[3] = {"rx", "ry", "rz"};
+            for (const char* n : names) {
+                const Matrix a = mat(v, n), b = mat(c.ref, n);
+                if (!same(a, b)) {
+                    c.add("builders", std::string("TODO 2: rotate_") + n[1] + "(0.3) = " + str(a) + ", expected " + str(b) +
+                                          (same(a, transpose(b)) ? ": it turns the wrong way (a transposed rotation)" : ""));
+                }
+            }
+            c.point("rz90", "builders", "TODO 2: rotate_z(pi / 2) applied to +x must give +y");
+            c.point("rx90", "builders", "TODO 2: rotate_x(pi / 2) applied to +y must give +z");
+            c.point("ry90", "builders", "TODO 2: rotate_y(pi / 2) applied to +z must give +x");
+            break;
+        }
+        case Group::kRodrigues:
+            c.matrix("r111", "rotation", "TODO 2b: rotate((1, 1, 1), 120 degrees) must cycle x -> y -> z");
+            c.matrix("rz", "rotation", "TODO 2b: rotate((0, 0, 2), 0.7) must equal rotate_z(0.7) (normalize the axis)");
+            c.matrix("zero", "rotation", "TODO 2b: rotate about the zero axis must give the identity (not NaN)");
+            c.matrix("general", "rotation", "TODO 2b: rotate((1, -2, 0.5), 1.3)");
+            break;
+        case Group::kComposition: {
+            const Vec3 tr = vec3(v, "tr");
+            if (!same3(tr, {3, 1, 0})) {
+                c.add(same3(tr, {0, 4, 0}) ? "multiplication order" : "composition",
+                      "TODO 1: (translate((3, 0, 0)) * rotate_z(pi / 2)) applied to (1, 0, 0) gave " + str(tr) +
+                          "; expected (3, 1, 0): first turn (to (0, 1, 0)), then move. A * B applies B first");
+            }
+            const Vec3 rt = vec3(v, "rt");
+            if (!same3(rt, {0, 4, 0})) {
+                c.add(same3(rt, {3, 1, 0}) ? "multiplication order" : "composition",
+                      "TODO 1: (rotate_z(pi / 2) * translate((3, 0, 0))) applied to (1, 0, 0) gave " + str(rt) +
+                          "; expected (0, 4, 0): first move to (4, 0, 0), then turn");
+            }
+            c.point("srt", "composition", "TODO 1: translate * rotate_x * scale applied to (0, 1, 0)");
+            break;
+        }
+        case Group::kInverse: {
+            for (int k = 0; k < 5; ++k) {
+                const std::string key = "inv" + std::to_string(k);
+                const bool singular = k >= 3;
+                const double ok = get(v, key + ".ok");
+                if (singular) {
+                    if (ok != 0) {
+                        c.add("inverse", "TODO 3a: matrix " + std::to_string(k) + (k == 3 ? " (a zero column)" : " (two equal rows)") +
+                                             " is singular, but inverse() returned true; report a zero pivot");
+                    }
+                } else if (ok != 1) {
+                    c.add("inverse", "TODO 3a: matrix " + std::to_string(k) + " is invertible, but inverse() returned false");
+                } else {
+                    c.matrix(key, "inverse", "TODO 3a: the inverse of matrix " + std::to_string(k) +
+                                                 (k == 1 ? " (its first pivot needs a row swap)" : ""));
+                }
+            }
+            c.matrix("rigid", "inverse", "TODO 3b: rigid_inverse of rotate_z(0.5) with translation (3, -1, 2)");
+            break;
+        }
+        case Group::kNearSingular: {
+            const Matrix a = near_singular_matrix();
+            if (get(v, "ok") != 1) {
+                c.add("inverse", "TODO 3a: this matrix (condition number 1e12) is invertible, but inverse() returned false: "
+                                 "is your singularity threshold absolute, or too large?");
+                break;
+            }
+            const Matrix r = mul(a, mat(v, "inv"));
+            double worst = 0;
+            for (int i = 0; i < 4; ++i) {
+                for (int j = 0; j < 4; ++j) worst = std::max(worst, std::abs(r[i][j] - (i == j ? 1 : 0)));
+            }
+            if (std::isnan(worst)) worst = 1e300;
+            for (int i = 0; i < 4; ++i) {
+                for (int j = 0; j < 4; ++j) {
+                    if (std::isnan(r[i][j])) worst = 1e300;
+                }
+            }
+            c.j.measures["residual |M M^-1 - I|"] = worst;
+            if (!(worst <= 1e-3)) {
+                c.add("inverse", "TODO 3a: |M * inverse(M) - I| = " + num(worst) +
+                                     " (at most 1e-3 allowed for condition 1e12): pivot on the largest |entry| of "
+                                     "each column, in double");
+            }
+            break;
+        }
+        case Group::kLookAt: {
+            for (const char* key : {"plain", "general", "down", "same", "noup"}) {
+                const Matrix a = mat(v, key), b = mat(c.ref, key);
+                if (same(a, b)) continue;
+                const bool fallback = std::string(key) == "down" || key == std::string("same") || key == std::string("noup");
+                // r (row 0) negated, and with it u = cross(r, f) (row 1); -f (row 2) unchanged.
+                bool flipped_r = true;
+                for (int col = 0; col < 3; ++col) flipped_r &= close(a[0][col], -b[0][col]) && close(a[2][col], b[2][col]);
+                flipped_r &= !close(b[0][0], 0) || !close(b[0][1], 0) || !close(b[0][2], 0);
+                bool finite = true;
+                for (const auto& row : a) {
+                    for (double x : row) finite &= std::isfinite(x);
+                }
+                const std::string what = std::string("look_at case '") + key + "': got " + str(a) + ", expected " + str(b);
+                if (flipped_r) {
+                    c.add("handedness", "TODO 4: " + what + ". Your right vector points left: r = cross(f, up), not "
+                                                             "cross(up, f), so that r, u, -f is right-handed");
+                } else if (fallback) {
+                    c.add("look at fallback", "TODO 4: " + what + (finite ? "" : " (NaN!)") +
+                                                  ". transforms.h pins the fallback for up parallel to the view and for "
+                                                  "eye == target");
+                } else {
+                    c.add("look at", "TODO 4: " + what);
+                }
+            }
+            break;
+        }
+        case Group::kProjection: {
+            const Matrix p = mat(v, "persp"), pr = mat(c.ref, "persp");
+            if (!same(p, pr)) {
+                // 90 "degrees" taken as radians: 1 / tan(45 rad) = 0.617...
+                if (close(p[1][1], 1 / std::tan(45.0))) {
+                    c.add("degrees", "TODO 5: perspective(90, ...) has f = " + num(p[1][1]) +
+                                         ", which is 1 / tan(45 radians). fovy is in DEGREES: convert with * pi / 180");
+                } else {
+                    c.add("projection", "TODO 5: perspective(90, 2, 1, 10) = " + str(p) + ", expected " + str(pr));
+                }
+            }
+            for (const char* key : {"persp60", "fov1", "fov179", "ortho"}) c.matrix(key, "projection", std::string("TODO 5: ") + key);
+            for (const char* key : {"bad_fov", "bad_near", "bad_ortho"}) {
+                c.matrix(key, "projection", std::string("TODO 5: invalid arguments (") + key + ") must give the zero matrix");
+            }
+            c.point("s0", "viewport", "TODO 6: to_screen((0, 0, 0, 1)) in 100 x 50 pixels is the center");
+            const Vec3 s1 = vec3(v, "s1");
+            if (!same3(s1, {62.5, 18.75, 0.1})) {
+                if (close(s1.x, 75)) {
+                    c.add("perspective divide", "TODO 6: to_screen((0.5, 0.5, 0.2, 2)) gave " + str(s1) +
+                                                    ": divide x, y and z by w first (NDC = (0.25, 0.25, 0.1)), then expect (62.5, 18.75)");
+                } else if (close(s1.y, 31.25)) {
+                    c.add("viewport", "TODO 6: to_screen((0.5, 0.5, 0.2, 2)) gave y = 31.25, expected 18.75: NDC y points "
+                                      "up but rows grow down, so y_pixel = (1 - y_ndc) / 2 * H");
+                } else {
+                    c.add("viewport", "TODO 6: to_screen((0.5, 0.5, 0.2, 2)) in 100 x 50 gave " + str(s1) + ", expected (62.5, 18.75, 0.1)");
+                }
+            }
+            c.point("chain0", "projection", "TODO 5, 6: view-space (0, 0, -5) through perspective(90, 1, 1, 10) to 64 x 64 pixels");
+            c.point("chain1", "projection", "TODO 5, 6: view-space (1, 1, -2) must land on pixel (48, 16)");
+            c.point("chain2", "projection", "TODO 5, 6: view-space (1, -1, -3) through orthographic(-2, 2, -2, 2, 1, 10)");
+            break;
+        }
+        case Group::kClip: {
+            const auto tris = clip_cases();
+            for (std::size_t k = 0; k < tris.size(); ++k) {
+                const std::string key = "poly" + std::to_string(k);
+                const auto a = polygon(v, key), b = polygon(c.ref, key);
+                if (same_polygon(a, b)) continue;
+                const std::string what = "clip_polygon of triangle " + str(tris[k][0]) + " " + str(tris[k][1]) + " " +
+                                         str(tris[k][2]) + " gave " + std::to_string(a.size()) + " vertices, expected " +
+                                         std::to_string(b.size());
+                if (beyond_near(a)) {
+                    c.add("near plane", "TODO 7a: " + what + "; some lie outside the near plane (z < -w or w <= 0): clip "
+                                        "against z >= -w too, or points behind the camera reach the divide");
+                } else {
+                    c.add("clipping", "TODO 7a: " + what + (beyond_any(a) ? " (some outside the view volume)" : ""));
+                }
+            }
+            const auto lines = clip_line_cases();
+            for (std::size_t k = 0; k < lines.size(); ++k) {
+                const std::string key = "line" + std::to_string(k);
+                const double ok = get(v, key + ".ok"), rok = get(c.ref, key + ".ok");
+                const Vec4 a = vec4(v, key + ".a"), b = vec4(v, key + ".b");
+                const Vec4 ra = vec4(c.ref, key + ".a"), rb = vec4(c.ref, key + ".b");
+                const double sc = scale_of({ra, rb});
+                if (ok != rok || (rok == 1 && !(same4(a, ra, sc) && same4(b, rb, sc)))) {
+                    const std::string what = "clip_line of " + str(lines[k][0]) + " - " + str(lines[k][1]) + " gave " +
+                                             (ok == 1 ? str(a) + " - " + str(b) : std::string("nothing")) + ", expected " +
+                                             (rok == 1 ? str(ra) + " - " + str(rb) : std::string("nothing"));
+                    c.add(ok == 1 && beyond_near({a, b}) ? "near plane" : "clipping", "TODO 7b: " + what);
+                }
+            }
+            break;
+        }
+        case Group::kCulling:
+            if (get(v, "cull.cw") != 1 || get(v, "cull.ccw") != 0 || get(v, "cull.flat") != 1) {
+                c.add("culling", "TODO 8: is_back_facing gave " + num(get(v, "cull.cw")) + " for (10,10) (20,10) (10,20) "
+                                 "(signed area > 0 in pixels: back), " + num(get(v, "cull.ccw")) + " for the reverse (front), " +
+                                 num(get(v, "cull.flat")) + " for a zero-area triangle (culled). A front face has a NEGATIVE "
+                                 "cross(s1 - s0, s2 - s0) when y grows downward");
+            }
+            break;
+        case Group::kBezier:
+            for (int k = 0; k < 5; ++k) c.point("b" + std::to_string(k), "bezier", "TODO 9: bezier at t = " + std::vector<std::string>{"0", "0.25", "0.5", "0.8", "1"}[k]);
+            break;
+        case Group::kPainter: {
+            const int expected[5] = {4, 1, 3, 0, 2};
+            bool ok = get(v, "order.n") == 5;
+            for (int k = 0; k < 5 && ok; ++k) ok = get(v, "order." + std::to_string(k)) == expected[k];
+            if (!ok) {
+                std::string got;
+                for (int k = 0; k < int(std::max(0.0, std::min(16.0, get(v, "order.n")))); ++k) got += (k ? " " : "") + num(get(v, "order." + std::to_string(k)));
+                c.add("painter", "TODO 10: painter_order gave [" + got + "], expected [4 1 3 0 2]: mean view-space z "
+                                 "-7, -5, -3.5, -2, -0.6, farthest (most negative) first");
+            }
+            break;
+        }
+        case Group::kRotationDrift: {
+            const Matrix r = mat(v, "r"), rr = mat(c.ref, "r");
+            double drift = 0;
+            const Matrix rrt = mul(r, transpose(r));
+            for (int i = 0; i < 4; ++i) {
+                for (int j = 0; j < 4; ++j) {
+                    const double d = std::abs(rrt[i][j] - (i == j ? 1 : 0));
+                    drift = std::isnan(d) ? 1e300 : std::max(drift, d);
+                }
+            }
+            c.j.measures["orthonormality drift |R R^T - I|"] = drift;
+            if (!(drift <= 1e-10) || !same(r, rr, 1e-9)) {
+                c.add("precision", "TODO 1, 2b: after 10,000 products of rotate((1, 2, 3), 0.001) the matrix is " + str(r) +
+                                       " (drift |R R^T - I| = " + num(drift) + "); expected rotate((1, 2, 3), 10) = " + str(rr) +
+                                       ". Use double throughout");
+            }
+            break;
+        }
+    }
+}
+
+// Pixels next to a color change in the expected image: a vertex rounding to a neighbouring
+// pixel may move them, so they may differ (up to a fifth of them).
+cp::Tolerance tolerance_for(const raster::Image& expected) {
+    cp::Tolerance t;
+    t.lenient = raster::Mask(expected.width(), expected.height());
+    for (int y = 0; y < expected.height(); ++y) {
+        for (int x = 0; x < expected.width(); ++x) {
+            const Color c = expected.at(x, y);
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    if (expected.in_bounds(x + dx, y + dy) && expected.at(x + dx, y + dy) != c) t.lenient.set(x, y);
+                }
+            }
+        }
+    }
+    t.max_lenient_diffs = t.lenient.count() / 5;
+    t.why = "pixels next to an edge depend on how a vertex near a pixel boundary rounds";
+    return t;
+}
+
+long long strict_diffs(const raster::Image& a, const raster::Image& e, const cp::Tolerance& t) {
+    if (a.width() != e.width() || a.height() != e.height()) return 1;
+    long long n = 0;
+    for (int y = 0; y < e.height(); ++y) {
+        for (int x = 0; x < e.width(); ++x) n += !t.lenient.get(x, y) && a.at(x, y) != e.at(x, y);
+    }
+    return n;
+}
+
+void judge_picture(Ctx& c, const cp::Artifacts& art) {
+    const Scene& s = c.s;
+    bool camera_ok = true;
+    for (std::size_t p = 0; p < s.panels.size(); ++p) {
+        const std::string key = "panel" + std::to_string(p);
+        camera_ok &= c.matrix(key + ".view", "look at", "TODO 4: the view matrix of look_at(" + str(s.panels[p].camera.eye) + ", " +
+                                                      str(s.panels[p].camera.target) + ", up) (m3.look_at has the details)");
+        camera_ok &= c.matrix(key + ".proj", "projection", std::string("TODO 5: the ") + (s.panels[p].camera.ortho ? "orthographic" : "perspective") +
+                                                         " matrix of this scene (m3.projection has the details)");
+    }
+    // The stage counts.
+    static const char* kStats[][3] = {
+        {"vertices_transformed", "pipeline", "vertices transformed (each position once)"},
+        {"triangles_clipped", "clipping", "triangles sent to the clipper (those not entirely inside the view volume)"},
+        {"triangles_culled", "culling", "triangles culled as back faces"},
+        {"triangles_filled", "pipeline", "triangles filled"},
+        {"lines_clipped", "clipping", "edges sent to clip_line (those not entirely inside)"},
+        {"lines_drawn", "pipeline", "lines drawn"},
+    };
+    bool clipped_any = false;
+    for (const auto& st : kStats) {
+        const std::string key = std::string("stats.") + st[0];
+        const double mine = get(c.mine, key), ref = get(c.ref, key);
+        c.j.measures[std::string(st[0]) + " (reference " + num(ref) + ")"] = mine;
+        clipped_any |= (key == "stats.triangles_clipped" || key == "stats.lines_clipped") && ref > 0;
+        // After clipping, a fan may hold zero-area triangles whose culling rounding decides:
+        // culled and filled counts are exact only for scenes that clip nothing.
+        const bool exact = !(clipped_any && (key == "stats.triangles_culled" || key == "stats.triangles_filled")) || ref == 0;
+        if (exact && mine != ref) {
+            std::string why;
+            if (ref == 0 && (key == "stats.triangles_filled" || key == "stats.lines_drawn")) {
+                why = ": this scene does not need that stage (Needs), so draw_model must not run it";
+            } else if (key == "stats.triangles_clipped" && ref == 0) {
+                why = ": every vertex is inside the view volume, so nothing needs clipping";
+            }
+            c.add(st[1], "TODO 11: " + num(mine) + " " + st[2] + ", expected " + num(ref) + why);
+        }
+    }
+    // The clipper on the scene's own triangles (scenes with one panel and small items).
+    bool clipper_ok = true;
+    for (const auto& [key, value] : c.ref) {
+        (void)value;
+        if (key.rfind("clip", 0) != 0 || key.size() < 2 || key.substr(key.size() - 2) != ".n") continue;
+        const std::string k = key.substr(0, key.size() - 2);
+        const auto a = polygon(c.mine, k), b = polygon(c.ref, k);
+        if (!same_polygon(a, b)) {
+            clipper_ok = false;
+            c.add(beyond_near(a) ? "near plane" : "clipping",
+                  "TODO 7a: clip_polygon on this scene's triangle gave " + std::to_string(a.size()) + " vertices, expected " +
+                      std::to_string(b.size()) + (beyond_near(a) ? ", some outside the near plane (z < -w)" : ""));
+        }
+    }
+    // Right matrices and a right clipper, but a picture that differs: the pipeline's order.
+    if (camera_ok && clipper_ok && clipped_any) {
+        try {
+            const raster::Image expected = raster::read_png(cp::expected_png_path("m3", s.id));
+            const auto it = art.images.find("main");
+            if (it != art.images.end() && strict_diffs(it->second, expected, tolerance_for(expected)) > 0) {
+                c.add("clip space", "TODO 11: your matrices and clip_polygon are right, yet the picture differs where no "
+                                    "edge is near: does draw_model clip in clip space, BEFORE the perspective divide? A "
+                                    "vertex with w <= 0 divided by w lands on the wrong side of the screen");
+            }
+        } catch (const std::exception&) {
+            // no expected image: the harness reports it
+        }
+    }
+}
+
+}  // namespace
+
+cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts) {
+    const Scene& s = scene(id);
+    cp::Judgement j;
+    const cp::Artifacts ref = reference::render(id);
+    try {
+        j.tolerance = tolerance_for(raster::read_png(cp::expected_png_path("m3", id)));
+    } catch (const std::exception&) {
+        // the harness reports the missing image
+    }
+    Ctx c{s, artifacts.values, ref.values, j};
+    if (artifacts.stray_writes > 0) {
+        c.add("pipeline", std::to_string(artifacts.stray_writes) + " write(s) outside the image: milestones 1 and 2 "
+                          "clip to the image, so this comes from your own code");
+    }
+    for (Group g : s.groups) judge_group(g, c);
+    if (!s.panels.empty()) judge_picture(c, artifacts);
+    return j;
+}
+
+}  // namespace m3cp

@@ -1,0 +1,426 @@
+#include "m3/scenes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "harness/checkpoint.h"
+
+namespace m3cp {
+
+namespace {
+
+const Color kPalette[] = {{230, 80, 60},  {60, 170, 90},  {70, 110, 230}, {230, 200, 60},
+                          {170, 80, 200}, {60, 190, 200}, {240, 140, 40}, {200, 200, 200}};
+
+// A convex mesh centered on the origin from polygon faces: each face is turned to face
+// outward (counter-clockwise seen from outside), fanned into triangles in one color, and its
+// edges listed once.
+Mesh from_faces(std::vector<Vec3> positions, std::vector<std::vector<int>> faces, bool colored) {
+    Mesh m;
+    m.positions = std::move(positions);
+    std::map<std::pair<int, int>, bool> seen;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        std::vector<int> face = faces[f];
+        Vec3 normal{}, center{};
+        for (std::size_t i = 0; i < face.size(); ++i) {
+            const Vec3 a = m.positions[face[i]], b = m.positions[face[(i + 1) % face.size()]];
+            normal = normal + raster::cross(a, b);
+            center = center + a;
+        }
+        if (raster::dot(normal, center) < 0) std::reverse(face.begin(), face.end());
+        for (std::size_t i = 1; i + 1 < face.size(); ++i) {
+            m.triangles.push_back({face[0], face[i], face[i + 1]});
+            m.face_colors.push_back(colored ? kPalette[f % 8] : raster::colors::white);
+        }
+        for (std::size_t i = 0; i < face.size(); ++i) {
+            const int a = face[i], b = face[(i + 1) % face.size()];
+            if (!seen[{std::min(a, b), std::max(a, b)}]) {
+                seen[{std::min(a, b), std::max(a, b)}] = true;
+                m.edges.push_back({a, b});
+            }
+        }
+    }
+    return m;
+}
+
+Scene numbers(std::string id, std::string title, std::string hint, std::vector<int> todos, std::vector<Group> groups) {
+    Scene s;
+    s.id = std::move(id);
+    s.title = std::move(title);
+    s.hint = std::move(hint);
+    s.todos = std::move(todos);
+    s.width = s.height = 16;
+    s.groups = std::move(groups);
+    return s;
+}
+
+Scene picture(std::string id, std::string title, std::string hint, std::vector<int> todos, int w, int h) {
+    Scene s;
+    s.id = std::move(id);
+    s.title = std::move(title);
+    s.hint = std::move(hint);
+    s.todos = std::move(todos);
+    s.width = w;
+    s.height = h;
+    return s;
+}
+
+Panel panel(Camera c, std::vector<Item> items, int x0, int y0, int w, int h) { return {c, std::move(items), x0, y0, w, h}; }
+
+// A camera at a generic position: the numbers in the scenes are chosen so that no vertex
+// lands exactly on a pixel boundary, where rounding alone could decide a pixel.
+Camera cam(Vec3 eye, Vec3 target = {0.013, -0.021, 0.007}) {
+    Camera c;
+    c.eye = eye;
+    c.target = target;
+    return c;
+}
+
+Item item(Mesh m, Vec3 pos = {}, Vec3 axis = {0, 1, 0}, double angle = 0, Vec3 size = {1, 1, 1}) {
+    return {std::move(m), pos, axis, angle, size};
+}
+
+// A single triangle (counter-clockwise from +z) with its three edges.
+Mesh triangle_mesh(Vec3 a, Vec3 b, Vec3 c, Color color) {
+    Mesh m;
+    m.positions = {a, b, c};
+    m.triangles = {{0, 1, 2}};
+    m.edges = {{0, 1}, {1, 2}, {2, 0}};
+    m.face_colors = {color};
+    return m;
+}
+
+std::vector<Scene> build() {
+    std::vector<Scene> out;
+    const double pi = std::numbers::pi;
+
+    // ---- numbers against hand-worked values ----
+    out.push_back(numbers("m3.matrix_ops", "Matrix product, transpose, points and directions",
+                          "Mat4 is m[row][col] and acts on column vectors: (M v)[r] = sum_c m[r][c] v[c]. A point has "
+                          "w = 1, a direction w = 0.",
+                          {1}, {Group::kMatrixOps}));
+    out.push_back(numbers("m3.builders", "translate, scale, rotate_x, rotate_y, rotate_z",
+                          "Translation goes in the last column. rotate_z(pi/2) takes +x to +y, rotate_x takes +y to +z, "
+                          "rotate_y takes +z to +x (right-hand rule, radians).",
+                          {2}, {Group::kBuilders}));
+    out.push_back(numbers("m3.rodrigues", "Rotation about any axis (Rodrigues)",
+                          "Normalize the axis; R = I + sin(a) K + (1 - cos(a)) K^2. A turn of 120 degrees about (1, 1, 1) "
+                          "takes x to y, y to z, z to x. The zero axis gives the identity.",
+                          {2}, {Group::kRodrigues}));
+    out.push_back(numbers("m3.composition", "Composition order: A * B means first B, then A",
+                          "translate(t) * rotate_z(a) turns the point about the origin and then moves it; the other "
+                          "product moves it first and turns the moved point.",
+                          {1, 2}, {Group::kComposition}));
+    out.push_back(numbers("m3.inverse", "General inverse, singular matrices, rigid inverse",
+                          "Gauss-Jordan with partial pivoting on [M | I]; a zero pivot means singular: return false. The "
+                          "rigid inverse is R^T with -R^T t.",
+                          {3}, {Group::kInverse}));
+    out.push_back(numbers("m3.near_singular", "A nearly singular matrix (condition number 1e12)",
+                          "Pivot on the largest entry of the column, and compare pivots with a threshold relative to the "
+                          "matrix's entries, not a fixed 1e-6.",
+                          {3}, {Group::kNearSingular}));
+    out.push_back(numbers("m3.look_at", "The view matrix, and its fallbacks",
+                          "f = normalize(target - eye), r = normalize(cross(f, up)), u = cross(r, f); rows r, u, -f. "
+                          "When up is parallel to f, or eye == target, use the fallbacks transforms.h pins.",
+                          {4}, {Group::kLookAt}));
+    out.push_back(numbers("m3.projection", "Perspective and orthographic: known points to known pixels",
+                          "perspective() takes DEGREES. Divide by w, then x = (x + 1) / 2 * W and y = (1 - y) / 2 * H: "
+                          "the top of the view is row 0.",
+                          {5, 6}, {Group::kProjection}));
+    out.push_back(numbers("m3.clip_numbers", "Clipping polygons and lines in clip space",
+                          "Clip against all six planes -w <= x, y, z <= w; points behind the camera (w < 0) or in its "
+                          "plane (w = 0) are outside the near plane z >= -w.",
+                          {7}, {Group::kClip}));
+    out.push_back(numbers("m3.bezier", "A cubic Bezier curve by de Casteljau",
+                          "Three rounds of linear interpolation at t: 4 points, then 3, 2, 1.", {9}, {Group::kBezier}));
+    out.push_back(numbers("m3.rotation_drift", "10,000 composed rotations",
+                          "Compose with doubles; each product must stay a rotation (orthonormal) to about 1e-12.",
+                          {1, 2}, {Group::kRotationDrift}));
+
+    // ---- pictures ----
+    {
+        Scene s = picture("m3.wireframe_cube", "Wireframe cube in perspective",
+                          "Model, view, projection, divide, viewport, then milestone 1's draw_line for every edge.",
+                          {11, 1, 4, 5, 6}, 96, 96);
+        s.panels = {panel(cam({2.3, 1.7, 4.1}), {item(cube_mesh(false), {0, 0, 0}, {0, 1, 0}, 0.3)}, 0, 0, 96, 96)};
+        s.wireframe = s.clip = true;
+        s.demo = true;
+        out.push_back(s);
+    }
+    {
+        Scene s = picture("m3.soccer_ball", "Soccer ball wireframe (truncated icosahedron: 60 vertices, 90 edges)",
+                          "The same pipeline as the cube: every edge drawn once.", {11}, 128, 128);
+        s.panels = {panel(cam({0.4, 0.9, 11.5}), {item(soccer_ball_mesh(), {0, 0, 0}, {1, 2, 0.5}, 0.4, {0.9, 0.9, 0.9})}, 0, 0, 128, 128)};
+        s.wireframe = s.clip = true;
+        s.demo = true;
+        out.push_back(s);
+    }
+    {
+        Scene s = picture("m3.solid_cube", "Solid cube with back faces culled",
+                          "A front face is counter-clockwise on screen, which in pixel coordinates (y down) is a NEGATIVE "
+                          "signed area: cull when cross(s1 - s0, s2 - s0) >= 0.",
+                          {8, 11}, 96, 96);
+        s.panels = {panel(cam({2.7, 2.1, 3.9}), {item(cube_mesh(true), {0, 0, 0}, {0, 1, 0}, 0.2)}, 0, 0, 96, 96)};
+        s.fill = s.cull = s.clip = true;
+        s.groups = {Group::kCulling};
+        s.demo = true;
+        out.push_back(s);
+    }
+    {
+        Scene s = picture("m3.persp_ortho", "Perspective (left) and orthographic (right) views of one scene",
+                          "Orthographic: the box [l, r] x [b, t] x [-near, -far] becomes the NDC cube, w stays 1.",
+                          {5, 11}, 160, 80);
+        std::vector<Item> row;
+        for (int i = 0; i < 3; ++i) row.push_back(item(cube_mesh(true), {-2.6 + 2.6 * i, 0, -2.0 * i}, {0, 1, 0}, 0.5, {0.8, 0.8, 0.8}));
+        Camera p = cam({1.1, 2.2, 7.3});
+        p.far = 60;
+        Camera o = p;
+        o.ortho = true;
+        o.half_height = 3.1;
+        s.panels = {panel(p, row, 0, 0, 80, 80), panel(o, row, 80, 0, 80, 80)};
+        s.fill = s.cull = s.clip = true;
+        s.demo = true;
+        out.push_back(s);
+    }
+    {
+        Scene s = picture("m3.orbit", "A camera orbiting the scene: four look_at views",
+                          "look_at from four sides: the object must turn, never mirror.", {4, 11}, 128, 128);
+        std::vector<Item> items = {item(cube_mesh(true), {0, 0, 0}, {0, 1, 0}, 0.1),
+                                   item(pyramid_mesh(), {0, 1.9, 0}, {0, 1, 0}, 0.25, {0.8, 0.8, 0.8})};
+        for (int k = 0; k < 4; ++k) {
+            const double a = 0.4 + k * pi / 2;
+            Camera c = cam({6.1 * std::sin(a), 2.9, 6.1 * std::cos(a)}, {0.011, 0.52, -0.017});
+            s.panels.push_back(panel(c, items, (k % 2) * 64, (k / 2) * 64, 64, 64));
+        }
+        s.fill = s.cull = s.clip = true;
+        s.demo = true;
+        out.push_back(s);
+    }
+    {
+        Scene s = picture("m3.models", "Octahedron and pyramid, solid and culled",
+                          "Every model's triangles are counter-clockwise from outside: culling keeps exactly the faces "
+                          "that turn towards the camera.",
+                          {8, 11}, 128, 64);
+        s.panels = {panel(cam({1.9, 2.3, 4.4}), {item(octahedron_mesh(), {}, {1, 0, 1}, 0.3, {1.5, 1.5, 1.5})}, 0, 0, 64, 64),
+                    panel(cam({2.4, 1.6, 4.3}), {item(pyramid_mesh(), {}, {0, 1, 0}, 0.6, {1.4, 1.4, 1.4})}, 64, 0, 64, 64)};
+        s.fill = s.cull = s.clip = true;
+        out.push_back(s);
+    }
+    {
+        Scene s = picture("m3.behind_camera", "Triangles reaching behind the camera and into its plane (w = 0)",
+                          "Clip in clip space, before the divide: a vertex with w <= 0 divided by w lands on the wrong "
+                          "side of the screen (or at infinity).",
+                          {7, 11}, 96, 96);
+        Camera c;
+        c.eye = {0, 0, 0};
+        c.target = {0, 0, -1};
+        c.near = 0.5;
+        c.far = 50;
+        c.fovy = 60;
+        // One vertex exactly in the camera's plane (view z = 0, so w = 0), one behind it.
+        Mesh a = triangle_mesh({-1.3, -0.9, -3.1}, {0.6, -1.1, 0.0}, {0.9, 0.7, -4.2}, {230, 80, 60});
+        Mesh b = triangle_mesh({-0.2, 0.45, -2.3}, {-1.6, 0.9, 2.7}, {-0.35, 1.7, -5.1}, {70, 110, 230});
+        s.panels = {panel(c, {item(a), item(b)}, 0, 0, 96, 96)};
+        s.fill = s.wireframe = s.clip = true;
+        s.line = {255, 255, 255};
+        out.push_back(s);
+    }
+    {
+        Scene s = picture("m3.near_crossing", "A triangle crossing the near plane, its far vertices 1e6 away",
+                          "The near plane cuts the triangle into a quadrilateral (fan it); the far vertices stay finite "
+                          "in clip space and reach milestone 2 inside its coordinate range.",
+                          {7, 11}, 96, 96);
+        Camera c;
+        c.eye = {0, 0, 0};
+        c.target = {0, 0, -1};
+        c.near = 0.1;
+        c.far = 2e6;
+        c.fovy = 70;
+        Mesh m = triangle_mesh({0.03, -0.02, 0.3}, {-3.1e5, -2.3e5, -1e6}, {2.9e5, 1.7e5, -1e6}, {60, 190, 200});
+        s.panels = {panel(c, {item(m)}, 0, 0, 96, 96)};
+        s.fill = s.wireframe = s.clip = true;
+        out.push_back(s);
+    }
+    {
+        Scene s = picture("m3.fov_extremes", "Fields of view of 1 and 179 degrees",
+                          "1 / tan(fovy / 2) with fovy converted to radians: 1 degree is a telescope, 179 a fisheye.",
+                          {5, 11}, 128, 64);
+        Camera narrow = cam({0.03, 0.02, 170.0});
+        narrow.fovy = 1;
+        narrow.far = 400;
+        Camera wide = cam({0.3, 0.2, 0.031});
+        wide.fovy = 179;
+        wide.near = 0.001;
+        std::vector<Item> grid;
+        for (int i = -2; i <= 2; ++i) grid.push_back(item(cube_mesh(true), {i * 0.6, 0, -0.6 * std::abs(i)}, {0, 1, 0}, 0.35, {0.25, 0.25, 0.25}));
+        s.panels = {panel(narrow, grid, 0, 0, 64, 64), panel(wide, grid, 64, 0, 64, 64)};
+        s.fill = s.cull = s.clip = true;
+        out.push_back(s);
+    }
+    {
+        Scene s = picture("m3.near_far_extreme", "near = 1e-4, far = 1e6",
+                          "Extreme near/far ratios squeeze depth, not x and y: the picture must be the ordinary one.",
+                          {5, 11}, 96, 96);
+        Camera c = cam({2.3, 1.7, 4.1});
+        c.near = 1e-4;
+        c.far = 1e6;
+        s.panels = {panel(c, {item(cube_mesh(true), {0, 0, 0}, {0, 1, 0}, 0.3)}, 0, 0, 96, 96)};
+        s.fill = s.cull = s.clip = s.wireframe = true;
+        s.line = {20, 20, 20};
+        out.push_back(s);
+    }
+    {
+        Scene s = picture("m3.far_model", "A model 1e6 units from the origin, seen from nearby",
+                          "Compose view * model before applying it: the large translations cancel in the matrix, and "
+                          "the vertices stay close to the camera.",
+                          {1, 4, 11}, 96, 96);
+        const Vec3 far{1e6, -2.5e5, 7.5e5};
+        Camera c = cam(far + Vec3{2.3, 1.7, 4.1}, far + Vec3{0.013, -0.021, 0.007});
+        s.panels = {panel(c, {item(cube_mesh(true), far, {0, 1, 0}, 0.3)}, 0, 0, 96, 96)};
+        s.fill = s.cull = s.clip = true;
+        out.push_back(s);
+    }
+    {
+        Scene s = picture("m3.painter", "Painter's algorithm: far faces first",
+                          "Sort by the mean view-space z of each triangle, most negative (farthest) first, then fill in "
+                          "that order so near faces cover far ones.",
+                          {10, 11}, 96, 96);
+        Mesh m;
+        // Three overlapping quads at different depths, listed near to far (so list order is wrong).
+        const double zs[3] = {-0.4, -1.7, -3.1};
+        for (int q = 0; q < 3; ++q) {
+            const int base = static_cast<int>(m.positions.size());
+            const double x = -0.9 + 0.7 * q, y = 0.5 - 0.55 * q, z = zs[q];
+            m.positions.push_back({x - 1.05, y - 0.95, z});
+            m.positions.push_back({x + 1.1, y - 0.9, z + 0.06});
+            m.positions.push_back({x + 1.0, y + 1.05, z + 0.11});
+            m.positions.push_back({x - 0.95, y + 1.0, z + 0.05});
+            m.triangles.push_back({base, base + 1, base + 2});
+            m.triangles.push_back({base, base + 2, base + 3});
+            m.face_colors.push_back(kPalette[q]);
+            m.face_colors.push_back(kPalette[q]);
+        }
+        s.panels = {panel(cam({0.2, 0.3, 4.2}, {0.01, -0.02, -1.0}), {item(m)}, 0, 0, 96, 96)};
+        s.fill = s.clip = s.painter = true;
+        s.groups = {Group::kPainter};
+        out.push_back(s);
+    }
+    return out;
+}
+
+}  // namespace
+
+Mesh cube_mesh(bool colored) {
+    std::vector<Vec3> p;
+    for (int i = 0; i < 8; ++i) p.push_back({i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0});
+    return from_faces(p, {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}}, colored);
+}
+
+Mesh octahedron_mesh() {
+    std::vector<Vec3> p = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    std::vector<std::vector<int>> f;
+    for (int x : {0, 1}) {
+        for (int y : {2, 3}) {
+            for (int z : {4, 5}) f.push_back({x, y, z});
+        }
+    }
+    return from_faces(p, f, true);
+}
+
+Mesh pyramid_mesh() {
+    // Base centered so that the centroid-based orientation test sees the origin inside.
+    std::vector<Vec3> p = {{-1, -0.5, -1}, {1, -0.5, -1}, {1, -0.5, 1}, {-1, -0.5, 1}, {0, 1, 0}};
+    return from_faces(p, {{0, 1, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}, true);
+}
+
+Mesh soccer_ball_mesh() {
+    const double phi = std::numbers::phi;
+    const double base[3][3] = {{0, 1, 3 * phi}, {1, 2 + phi, 2 * phi}, {phi, 2, 2 * phi + 1}};
+    Mesh m;
+    for (const auto& b : base) {
+        for (int sign = 0; sign < 8; ++sign) {
+            const double v[3] = {sign & 1 ? -b[0] : b[0], sign & 2 ? -b[1] : b[1], sign & 4 ? -b[2] : b[2]};
+            if ((v[0] == 0 && (sign & 1)) || (v[1] == 0 && (sign & 2)) || (v[2] == 0 && (sign & 4))) continue;
+            for (int shift = 0; shift < 3; ++shift) {  // the even (cyclic) permutations
+                m.positions.push_back({v[shift] / 3, v[(shift + 1) % 3] / 3, v[(shift + 2) % 3] / 3});
+            }
+        }
+    }
+    // Edges join the vertices at distance 2 (2 / 3 after the scaling above).
+    for (int i = 0; i < static_cast<int>(m.positions.size()); ++i) {
+        for (int j = i + 1; j < static_cast<int>(m.positions.size()); ++j) {
+            if (std::abs(raster::length(m.positions[i] - m.positions[j]) - 2.0 / 3) < 1e-9) m.edges.push_back({i, j});
+        }
+    }
+    return m;
+}
+
+Matrix near_singular_matrix() {
+    // Q1 * diag(1e6, 1, 1, 1e-6) * Q2 with 4D rotations Q1, Q2 (Givens rotations in several
+    // planes), so every entry is mixed and the condition number is 1e12.
+    auto givens = [](int i, int j, double a) {
+        Matrix g{};
+        for (int k = 0; k < 4; ++k) g[k][k] = 1;
+        g[i][i] = g[j][j] = std::cos(a);
+        g[i][j] = -std::sin(a);
+        g[j][i] = std::sin(a);
+        return g;
+    };
+    auto mul = [](const Matrix& a, const Matrix& b) {
+        Matrix r{};
+        for (int i = 0; i < 4; ++i) {
+            for (int j = 0; j < 4; ++j) {
+                for (int k = 0; k < 4; ++k) r[i][j] += a[i][k] * b[k][j];
+            }
+        }
+        return r;
+    };
+    Matrix d{};
+    d[0][0] = 1e6;
+    d[1][1] = d[2][2] = 1;
+    d[3][3] = 1e-6;
+    const Matrix q1 = mul(mul(givens(0, 3, 0.7), givens(1, 2, 0.4)), givens(0, 1, 1.1));
+    const Matrix q2 = mul(mul(givens(2, 3, 0.9), givens(0, 2, -0.6)), givens(1, 3, 0.3));
+    return mul(mul(q1, d), q2);
+}
+
+std::vector<std::array<Vec4, 3>> clip_cases() {
+    return {
+        // inside: unchanged
+        {{{0.1, 0.2, 0.3, 1}, {0.6, -0.1, 0.2, 1}, {-0.2, 0.5, -0.4, 1}}},
+        // crossing the right plane x = w
+        {{{0.2, 0.1, 0.0, 1}, {2.3, 0.3, 0.1, 1.2}, {0.4, 0.8, -0.2, 1}}},
+        // crossing two planes (right and top): a pentagon
+        {{{0.1, 0.1, 0.1, 1}, {1.9, 0.3, 0.2, 1}, {0.3, 1.7, 0.1, 1}}},
+        // one vertex behind the camera (w < 0)
+        {{{0.1, 0.2, 0.4, 1}, {0.4, -0.3, 1.3, -1.5}, {-0.5, 0.3, 1.2, 2}}},
+        // one vertex exactly in the camera's plane (w = 0), as a perspective makes it
+        {{{-0.3, -0.2, 0.5, 1.5}, {0.7, 0.35, -1.0, 0.0}, {0.2, 0.6, 0.9, 2.5}}},
+        // crossing the near plane with the far vertices 1e6 away
+        {{{0.03, -0.02, -0.35, 0.2}, {-3.1e5, -2.3e5, 9.99e5, 1e6}, {2.9e5, 1.7e5, 9.99e5, 1e6}}},
+        // entirely outside (beyond the left plane): nothing
+        {{{-2.1, 0.1, 0.0, 1}, {-3.0, 0.5, 0.2, 1}, {-1.6, -0.4, 0.1, 1.1}}},
+    };
+}
+
+std::vector<std::array<Vec4, 2>> clip_line_cases() {
+    return {
+        {{{0.1, 0.2, 0.3, 1}, {-0.4, 0.5, 0.1, 1}}},     // inside
+        {{{0.2, 0.1, 0.0, 1}, {2.4, 0.3, 0.1, 1.1}}},    // leaves through the right plane
+        {{{-1.8, 0.2, 0.1, 1}, {1.9, -0.3, 0.2, 1}}},    // crosses both side planes
+        {{{0.1, 0.2, 0.4, 1}, {0.4, -0.3, 1.3, -1.5}}},  // one end behind the camera
+        {{{0.7, 0.35, -1.0, 0.0}, {0.2, 0.1, 0.9, 2.5}}},  // one end at w = 0
+        {{{1.5, 0.1, 0.0, 1}, {2.5, 0.4, 0.1, 1}}},      // outside: nothing
+    };
+}
+
+const std::vector<Scene>& scenes() {
+    static const std::vector<Scene> all = build();
+    return all;
+}
+
+const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
+
+}  // namespace m3cp

@@ -1,0 +1,85 @@
+// Milestone 3 scenes: the trusted description of every transform checkpoint and demo picture.
+// Plain data (no milestone-3 types), so one copy serves the student's and the reference's
+// render halves and the judge.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "raster/color.h"
+#include "raster/vec.h"
+
+namespace m3cp {
+
+using raster::Color;
+using raster::Vec3;
+using raster::Vec4;
+using Matrix = std::array<std::array<double, 4>, 4>;  // m[row][col], as m3::Mat4
+
+struct Mesh {
+    std::vector<Vec3> positions;
+    std::vector<std::array<int, 3>> triangles;  // counter-clockwise from outside
+    std::vector<std::array<int, 2>> edges;
+    std::vector<Color> face_colors;
+};
+
+// model matrix = translate(position) * rotate(axis, angle) * scale(size)
+struct Item {
+    Mesh mesh;
+    Vec3 position{};
+    Vec3 axis{0, 1, 0};
+    double angle = 0;
+    Vec3 size{1, 1, 1};
+};
+
+struct Camera {
+    Vec3 eye{0, 0, 5}, target{}, up{0, 1, 0};
+    bool ortho = false;
+    double fovy = 50;          // degrees (perspective)
+    double half_height = 2;    // orthographic: top = half_height, right = half_height * aspect
+    double near = 0.5, far = 100;
+};
+
+// One picture: a camera and items, drawn into the rectangle (x0, y0, w, h) of the main image.
+struct Panel {
+    Camera camera;
+    std::vector<Item> items;
+    int x0 = 0, y0 = 0, w = 0, h = 0;
+};
+
+// Number groups: each calls some functions of the milestone on fixed inputs; the judge checks
+// the results (hand-worked values, or the reference where hand-working is impractical).
+enum class Group {
+    kMatrixOps, kBuilders, kRodrigues, kComposition, kInverse, kNearSingular, kLookAt, kProjection,
+    kClip, kCulling, kBezier, kPainter, kRotationDrift,
+};
+
+struct Scene {
+    std::string id;
+    std::string title;
+    std::string hint;
+    std::vector<int> todos;  // the TODOs this checkpoint exercises, first the main one
+    int width = 96, height = 96;
+    std::vector<Panel> panels;   // pictures (none for a numbers-only checkpoint)
+    bool fill = false, wireframe = false, cull = false, clip = false, painter = false;
+    Color line = {255, 255, 255};
+    std::vector<Group> groups;
+    bool demo = false;
+};
+
+const std::vector<Scene>& scenes();
+const Scene& scene(const std::string& id);
+
+// Shapes shared with the demo and the tools.
+Mesh cube_mesh(bool colored);
+Mesh soccer_ball_mesh();  // truncated icosahedron: 60 vertices, 90 edges, 32 faces
+Mesh octahedron_mesh();
+Mesh pyramid_mesh();
+
+// The fixed inputs of the number groups (trusted; the judge recomputes from these).
+Matrix near_singular_matrix();
+std::vector<std::array<Vec4, 3>> clip_cases();       // triangles in clip space
+std::vector<std::array<Vec4, 2>> clip_line_cases();  // segments in clip space
+
+}  // namespace m3cp
