@@ -192,10 +192,10 @@ void judge_group(Group g, Ctx& c) {
                 }
             }
             if (!same(mat(v, "at"), transpose(a))) c.add("matrix", "TODO 1: transpose(A) is wrong: got " + str(mat(v, "at")));
-            // A * (1, 2, 3, 1) = (9, 11, 4, 1); with rows and columns exchanged: (3, 4, 9, 16).
+            // A * (1, 2, 3, 1) = (9, 11, 4, 1); with rows and columns exchanged: (7, 4, 9, 2).
             const Vec4 av = vec4(v, "av");
             if (!(close(av.x, 9) && close(av.y, 11) && close(av.z, 4) && close(av.w, 1))) {
-                if (close(av.x, 3) && close(av.y, 4) && close(av.z, 9) && close(av.w, 16)) {
+                if (close(av.x, 7) && close(av.y, 4) && close(av.z, 9) && close(av.w, 2)) {
                     c.add("storage order", "TODO 1: M * v reads m[col][row]: A * (1, 2, 3, 1) gave " + str(av) +
                                                " instead of (9, 11, 4, 1). Mat4 is m[row][col]; (M v)[r] = sum_c m[r][c] v[c], "
                                                "so the translation is the last COLUMN");
