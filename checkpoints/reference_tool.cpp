@@ -10,6 +10,8 @@
 //                                 exact area, and render time, for 1, 4 and 16 samples. --update
 //                                 rewrites the table between the aa-table markers in FILE (the
 //                                 lesson); --check fails if the errors there are not current.
+//   reference_tool m3-table [...]  likewise, milestone 3's error-against-run-time tables (inverses,
+//                                 rotation drift, a far-away model in float and double)
 //
 // Expected images come only from here: never edit them by hand.
 #include <filesystem>
@@ -29,7 +31,9 @@
 #include "m2/scenes.h"
 #include "m3/render.h"
 #include "m3/scenes.h"
+#include "m3/tables.h"
 #include "raster/compare.h"
+#include "raster/gif.h"
 #include "raster/io.h"
 
 namespace fs = std::filesystem;
@@ -106,7 +110,11 @@ int gallery(const std::string& dir) {
     for (const Entry& e : all_scenes()) {
         if (e.demo) items.push_back({e.milestone, e.id, e.title, e.render});
     }
-    return cp::showcase(items, dir, "Reference gallery: every milestone's demo scenes");
+    const int shown = cp::showcase(items, dir, "Reference gallery: every milestone's demo scenes");
+    // Milestone 3's animation (the demo's spinning cube and soccer ball on a Bezier camera path).
+    raster::write_gif((fs::path(dir) / "m3_animation.gif").string(), m3cp::reference::animation(), 6);
+    std::cout << "wrote " << (fs::path(dir) / "m3_animation.gif").string() << "\n";
+    return shown;
 }
 
 std::string aa_table_text() {
@@ -133,29 +141,30 @@ std::string without_times(const std::string& table) {
     return out;
 }
 
-int aa_table(const std::vector<std::string>& args) {
-    const std::string table = aa_table_text();
+// A table between the markers `<!-- NAME ...` and `<!-- /NAME -->` of a lesson: printed,
+// rewritten (--update FILE), or checked for drift in everything but its time column (--check).
+int marked_table(const std::string& name, const std::string& table, const std::vector<std::string>& args) {
     if (args.size() == 1) {
         std::cout << table;
         return 0;
     }
-    const std::string begin = "<!-- aa-table", end = "<!-- /aa-table -->";
+    const std::string begin = "<!-- " + name, end = "<!-- /" + name + " -->";
     std::ifstream in(args[2]);
     std::stringstream ss;
     ss << in.rdbuf();
     std::string text = ss.str();
     const auto b = text.find(begin), e = text.find(end);
     if (b == std::string::npos || e == std::string::npos || e < b) {
-        std::cerr << args[2] << ": no aa-table markers\n";
+        std::cerr << args[2] << ": no " << name << " markers\n";
         return 1;
     }
     const auto body = text.find('\n', b) + 1;
     if (args[1] == "--check") {
         if (without_times(text.substr(body, e - body)) != without_times(table)) {
-            std::cerr << args[2] << ": the anti-aliasing table is out of date; run `make regenerate`\n";
+            std::cerr << args[2] << ": the " << name << " is out of date; run `make regenerate`\n";
             return 1;
         }
-        std::cout << args[2] << ": the anti-aliasing table's errors are current\n";
+        std::cout << args[2] << ": the " << name << "'s errors are current\n";
         return 0;
     }
     text.replace(body, e - body, table);
@@ -171,13 +180,13 @@ int main(int argc, char** argv) {
         if (args.size() == 1 && args[0] == "expected") return write_expected();
         if (args.size() == 1 && args[0] == "verify") return verify();
         if (args.size() == 2 && args[0] == "gallery") return gallery(args[1]);
-        if (!args.empty() && args[0] == "aa-table" && (args.size() == 1 || (args.size() == 3 && (args[1] == "--update" || args[1] == "--check")))) {
-            return aa_table(args);
-        }
+        const bool table_args = args.size() == 1 || (args.size() == 3 && (args[1] == "--update" || args[1] == "--check"));
+        if (!args.empty() && args[0] == "aa-table" && table_args) return marked_table("aa-table", aa_table_text(), args);
+        if (!args.empty() && args[0] == "m3-table" && table_args) return marked_table("m3-table", m3cp::error_time_tables(), args);
     } catch (const std::exception& e) {
         std::cerr << "reference_tool: " << e.what() << "\n";
         return 1;
     }
-    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table [--update|--check FILE]\n";
+    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table|m3-table [--update|--check FILE]\n";
     return 2;
 }

@@ -236,5 +236,29 @@ cp::Artifacts render(const std::string& id) {
     });
 }
 
+std::vector<raster::Image> animation() {
+    const int frames = 36, width = 160, height = 120;
+    Mesh wire_ball = soccer_ball_mesh();
+    wire_ball.triangles.clear();
+    const m3::Model cube = to_model(cube_mesh(false)), ball = to_model(wire_ball);
+    const m3::Needs wire{false, true, false, true, false};
+    std::vector<raster::Image> out;
+    for (int f = 0; f < frames; ++f) {
+        const double t = double(f) / (frames - 1);
+        // The camera's path: a Bezier curve from the left, over the top, to the right.
+        const Vec3 eye = m3::bezier({-6, 1, 7}, {-2, 6, 9}, {4, 5, 8}, {7, 0.5, 5}, t);
+        const Mat4 view = m3::look_at(eye, {0, 0, 0}, {0, 1, 0});
+        const Mat4 proj = m3::perspective(50, double(width) / height, 0.1, 100);
+        const double spin = 2 * std::numbers::pi * t;
+        raster::Image img(width, height, {16, 18, 28});
+        m3::draw_model(img, cube, m3::translate({-1.8, 0, 0}) * m3::rotate({1, 1, 0}, spin), view, proj, wire,
+                       {240, 200, 80});
+        m3::draw_model(img, ball, m3::translate({1.8, 0, 0}) * m3::rotate({0, 1, 0.3}, -spin) * m3::scale({1.3, 1.3, 1.3}),
+                       view, proj, wire, {120, 200, 255});
+        out.push_back(img);
+    }
+    return out;
+}
+
 }  // namespace RASTER_FLAVOUR
 }  // namespace m3cp

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "harness/checkpoint.h"
+#include "raster/mesh.h"
 
 namespace m3cp {
 
@@ -152,7 +153,10 @@ std::vector<Scene> build() {
     {
         Scene s = picture("m3.soccer_ball", "Soccer ball wireframe (truncated icosahedron: 60 vertices, 90 edges)",
                           "The same pipeline as the cube: every edge drawn once.", {11}, 128, 128);
-        s.panels = {panel(cam({0.4, 0.9, 11.5}), {item(soccer_ball_mesh(), {0, 0, 0}, {1, 2, 0.5}, 0.4, {0.9, 0.9, 0.9})}, 0, 0, 128, 128)};
+        Mesh ball = soccer_ball_mesh();
+        ball.triangles.clear();
+        ball.face_colors.clear();
+        s.panels = {panel(cam({0.4, 0.9, 4.1}), {item(ball, {0, 0, 0}, {1, 2, 0.5}, 0.4)}, 0, 0, 128, 128)};
         s.wireframe = s.clip = true;
         s.demo = true;
         out.push_back(s);
@@ -199,13 +203,15 @@ std::vector<Scene> build() {
         out.push_back(s);
     }
     {
-        Scene s = picture("m3.models", "Octahedron and pyramid, solid and culled",
+        Scene s = picture("m3.models", "The shipped OBJ models: octahedron, pyramid, soccer ball, solid and culled",
                           "Every model's triangles are counter-clockwise from outside: culling keeps exactly the faces "
                           "that turn towards the camera.",
-                          {8, 11}, 128, 64);
-        s.panels = {panel(cam({1.9, 2.3, 4.4}), {item(octahedron_mesh(), {}, {1, 0, 1}, 0.3, {1.5, 1.5, 1.5})}, 0, 0, 64, 64),
-                    panel(cam({2.4, 1.6, 4.3}), {item(pyramid_mesh(), {}, {0, 1, 0}, 0.6, {1.4, 1.4, 1.4})}, 64, 0, 64, 64)};
+                          {8, 11}, 192, 64);
+        s.panels = {panel(cam({1.9, 2.3, 4.4}), {item(obj_mesh("octahedron", true), {}, {1, 0, 1}, 0.3, {1.5, 1.5, 1.5})}, 0, 0, 64, 64),
+                    panel(cam({2.4, 1.6, 4.3}), {item(obj_mesh("pyramid", true), {}, {0, 1, 0}, 0.6, {1.4, 1.4, 1.4})}, 64, 0, 64, 64),
+                    panel(cam({1.3, 1.1, 4.6}), {item(soccer_ball_mesh(), {}, {1, 2, 0.5}, 0.4, {1.6, 1.6, 1.6})}, 128, 0, 64, 64)};
         s.fill = s.cull = s.clip = true;
+        s.demo = true;
         out.push_back(s);
     }
     {
@@ -318,44 +324,28 @@ Mesh cube_mesh(bool colored) {
     return from_faces(p, {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}}, colored);
 }
 
-Mesh octahedron_mesh() {
-    std::vector<Vec3> p = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    std::vector<std::vector<int>> f;
-    for (int x : {0, 1}) {
-        for (int y : {2, 3}) {
-            for (int z : {4, 5}) f.push_back({x, y, z});
-        }
-    }
-    return from_faces(p, f, true);
-}
-
 Mesh pyramid_mesh() {
     // Base centered so that the centroid-based orientation test sees the origin inside.
     std::vector<Vec3> p = {{-1, -0.5, -1}, {1, -0.5, -1}, {1, -0.5, 1}, {-1, -0.5, 1}, {0, 1, 0}};
     return from_faces(p, {{0, 1, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}, true);
 }
 
-Mesh soccer_ball_mesh() {
-    const double phi = std::numbers::phi;
-    const double base[3][3] = {{0, 1, 3 * phi}, {1, 2 + phi, 2 * phi}, {phi, 2, 2 * phi + 1}};
+Mesh obj_mesh(const std::string& name, bool colored) {
+    const raster::Mesh obj = raster::load_obj(raster::model_path(name));
     Mesh m;
-    for (const auto& b : base) {
-        for (int sign = 0; sign < 8; ++sign) {
-            const double v[3] = {sign & 1 ? -b[0] : b[0], sign & 2 ? -b[1] : b[1], sign & 4 ? -b[2] : b[2]};
-            if ((v[0] == 0 && (sign & 1)) || (v[1] == 0 && (sign & 2)) || (v[2] == 0 && (sign & 4))) continue;
-            for (int shift = 0; shift < 3; ++shift) {  // the even (cyclic) permutations
-                m.positions.push_back({v[shift] / 3, v[(shift + 1) % 3] / 3, v[(shift + 2) % 3] / 3});
-            }
+    m.positions = obj.positions;
+    m.triangles = obj.triangles;
+    // The loader fans each polygon face in order: face f gives size - 2 triangles.
+    for (std::size_t f = 0; f < obj.faces.size(); ++f) {
+        for (std::size_t k = 2; k < obj.faces[f].size(); ++k) {
+            m.face_colors.push_back(colored ? kPalette[f % 8] : raster::colors::white);
         }
     }
-    // Edges join the vertices at distance 2 (2 / 3 after the scaling above).
-    for (int i = 0; i < static_cast<int>(m.positions.size()); ++i) {
-        for (int j = i + 1; j < static_cast<int>(m.positions.size()); ++j) {
-            if (std::abs(raster::length(m.positions[i] - m.positions[j]) - 2.0 / 3) < 1e-9) m.edges.push_back({i, j});
-        }
-    }
+    m.edges = raster::unique_edges(obj);
     return m;
 }
+
+Mesh soccer_ball_mesh() { return obj_mesh("soccer_ball", true); }
 
 Matrix near_singular_matrix() {
     // Q1 * diag(1e6, 1, 1, 1e-6) * Q2 with 4D rotations Q1, Q2 (Givens rotations in several

@@ -73,9 +73,9 @@ const Scene& scene(const std::string& id);
 
 // Shapes shared with the demo and the tools.
 Mesh cube_mesh(bool colored);
-Mesh soccer_ball_mesh();  // truncated icosahedron: 60 vertices, 90 edges, 32 faces
-Mesh octahedron_mesh();
 Mesh pyramid_mesh();
+Mesh soccer_ball_mesh();  // common/models/soccer_ball.obj: 60 vertices, 90 edges, 32 faces
+Mesh obj_mesh(const std::string& name, bool colored);  // a model shipped in common/models
 
 // The fixed inputs of the number groups (trusted; the judge recomputes from these).
 Matrix near_singular_matrix();
