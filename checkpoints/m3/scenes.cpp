@@ -313,6 +313,24 @@ std::vector<Scene> build() {
         s.groups = {Group::kPainter};
         out.push_back(s);
     }
+    {
+        Scene s = picture("m3.painter_fails", "Where the painter's algorithm fails: two triangles passing through each other",
+                          "This picture is wrong on purpose (see the lesson): the blue triangle's mean depth is nearer, "
+                          "so it is drawn last and covers the red one everywhere, even where it passes behind it. The "
+                          "checkpoint checks that you sort by the pinned rule.",
+                          {10, 11}, 96, 96);
+        Mesh m;
+        // Listed near to far by mean z (-2.73, then -3.0), so list order would draw red last.
+        m.positions = {{-1.0, 0.35, -1.8}, {1.05, 0.3, -1.85}, {0.04, -1.15, -4.55},
+                       {-1.25, -0.85, -3.0}, {1.2, -0.8, -3.0}, {-0.05, 1.05, -3.0}};
+        m.triangles = {{0, 2, 1}, {3, 4, 5}};
+        m.face_colors = {{70, 110, 230}, {230, 80, 60}};
+        Camera c = cam({0.02, 0.03, 0.0}, {0.0, 0.0, -1.0});
+        s.panels = {panel(c, {item(m)}, 0, 0, 96, 96)};
+        s.fill = s.clip = s.painter = true;
+        s.demo = true;
+        out.push_back(s);
+    }
     return out;
 }
 
