@@ -50,6 +50,14 @@ void save_artifacts(const std::string& id, const Artifacts& a) {
     out << std::setprecision(17);
     out << "seconds " << a.seconds << "\nstray_writes " << a.stray_writes << "\n";
     for (const auto& [name, v] : a.values) out << "value " << name << " " << v << "\n";
+    for (const auto& [name, t] : a.trace) {
+        out << "trace " << name << " " << t.calls << " " << t.writes << " " << t.stray_writes << "\n";
+    }
+    if (a.stopped) {
+        const StoppedCall& s = a.stopped_call;
+        out << "stopped " << (s.function.empty() ? "-" : s.function) << " " << s.call << " " << s.writes << " "
+            << s.stray_writes << " " << s.seconds << "\n";
+    }
 }
 
 Artifacts load_artifacts(const std::string& id) {
@@ -64,6 +72,20 @@ Artifacts load_artifacts(const std::string& id) {
         std::istringstream words(line);
         std::string key, name, number;
         words >> key;
+        if (key == "trace") {
+            FunctionTrace t;
+            words >> name >> t.calls >> t.writes >> t.stray_writes;
+            a.trace[name] = t;
+            continue;
+        }
+        if (key == "stopped") {
+            StoppedCall& s = a.stopped_call;
+            words >> s.function >> s.call >> s.writes >> s.stray_writes >> number;
+            if (s.function == "-") s.function.clear();
+            s.seconds = std::strtod(number.c_str(), nullptr);
+            a.stopped = true;
+            continue;
+        }
         if (key == "value") words >> name;
         words >> number;
         const double v = std::strtod(number.c_str(), nullptr);
@@ -157,6 +179,97 @@ bool register_suite(const Suite& suite) {
     return true;
 }
 
+namespace {
+
+const StudentFunction* find_function(const Suite& suite, const std::string& name) {
+    for (const StudentFunction& f : suite.functions) {
+        if (f.name == name) return &f;
+    }
+    return nullptr;
+}
+
+// "`draw_line` (TODOs 3-4)", or "`draw_line`" when the milestone's table does not name it.
+std::string function_label(const Suite& suite, const std::string& name) {
+    const StudentFunction* f = find_function(suite, name);
+    const std::string todo = f ? todo_label(f->todos) : "";
+    return "`" + name + "`" + (todo.empty() ? "" : " (" + todo + ")");
+}
+
+std::string finding_todo(const Suite& suite, const Finding& f) {
+    if (!f.todo.empty()) return f.todo;
+    const auto it = suite.topics.find(f.topic);
+    return it == suite.topics.end() ? "" : it->second.todo;
+}
+
+std::string finding_hint(const Suite& suite, const Finding& f) {
+    if (!f.hint.empty()) return f.hint;
+    const auto it = suite.topics.find(f.topic);
+    return it == suite.topics.end() ? "" : it->second.hint;
+}
+
+// "[topic] (TODO 5) message": how a finding is printed and recorded.
+std::string finding_line(const Suite& suite, const Finding& f) {
+    const std::string todo = finding_todo(suite, f);
+    const bool named = todo.empty() || f.message.find("(" + todo + ")") != std::string::npos;
+    return "[" + f.topic + "] " + (named ? "" : "(" + todo + ") ") + f.message;
+}
+
+// The finding for a render the watchdog stopped.
+Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
+    std::ostringstream msg;
+    msg << std::fixed << std::setprecision(1);
+    if (s.function.empty()) {
+        msg << "the render did not finish within " << s.seconds
+            << " s, and none of your functions was running: a loop outside them (report this to your teacher)";
+        return {"endless loop", msg.str()};
+    }
+    const StudentFunction* f = find_function(suite, s.function);
+    msg << function_label(suite, s.function) << " was still running after " << s.seconds << " s, in its ";
+    if (s.call <= 1) {
+        msg << "first call on this scene";
+    } else {
+        msg << "call number " << s.call << " on this scene (" << s.call - 1 << " earlier call(s) returned)";
+    }
+    msg << ", having written " << s.writes << " pixel(s) in that call";
+    if (s.stray_writes > 0) msg << " and " << s.stray_writes << " outside the image";
+    msg << ": most likely an endless loop, so the watchdog stopped it";
+    Finding out{f && !f->loop_topic.empty() ? f->loop_topic : "endless loop", msg.str()};
+    out.todo = f ? todo_label(f->todos) : "";
+    out.hint = f ? f->loop_advice : "";
+    return out;
+}
+
+// One finding per function that the reference drew with on this scene and the code under test
+// called without drawing anything: most often a TODO not written yet.
+std::vector<Finding> nothing_drawn_findings(const Suite& suite, const Artifacts& student, const Artifacts& reference) {
+    std::vector<std::string> names;  // the milestone's TODO order first, then any other
+    for (const StudentFunction& f : suite.functions) names.push_back(f.name);
+    for (const auto& [name, t] : reference.trace) {
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    std::vector<Finding> out;
+    for (const std::string& name : names) {
+        const auto ref_it = reference.trace.find(name);
+        if (ref_it == reference.trace.end()) continue;
+        const FunctionTrace& ref = ref_it->second;
+        const auto it = student.trace.find(name);
+        if (ref.writes == 0 || it == student.trace.end() || it->second.calls == 0 || it->second.writes > 0) continue;
+        const StudentFunction* f = find_function(suite, name);
+        std::string msg = function_label(suite, name) + " drew nothing" +
+                          (it->second.stray_writes > 0 ? " inside the image" : "") + " in " +
+                          std::to_string(it->second.calls) + " call(s); the reference draws " +
+                          std::to_string(ref.writes) + " pixel(s) with it on this scene";
+        Finding finding{"nothing drawn", msg};
+        finding.todo = f ? todo_label(f->todos) : "";
+        finding.hint = (finding.todo.empty() ? "this TODO" : finding.todo) + " is not written yet (or `" + name +
+                       "` returns before drawing anything): fill it in, following its section in the lesson";
+        out.push_back(finding);
+    }
+    return out;
+}
+
+}  // namespace
+
 void run_checkpoint(const Suite& suite, const std::string& id) {
     const Mode mode = mode_from_env();
     Record rec;
@@ -165,13 +278,56 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
     rec.title = suite.title(id);
     rec.order = static_cast<int>(std::find(suite.ids.begin(), suite.ids.end(), id) - suite.ids.begin());
     rec.status = "crashed";  // overwritten below unless the code under test never returns
-    if (mode != Mode::kRender) write_record(rec);
+
+    // The reference first: its trace says which TODOs the scene needs, which is worth saying
+    // even when the code under test then crashes.
+    Artifacts reference;
+    std::string needs;
+    if (mode != Mode::kRender) {
+        reference = render_timed(suite.render_reference, id);
+        const std::vector<int> todos = needed_todos(suite, reference);
+        rec.todos = todo_list(todos);
+        if (!todos.empty()) needs = " (needs " + todo_label(todos) + ")";
+        write_record(rec);
+    }
 
     // ---- render half ----
     Artifacts student;
     if (mode == Mode::kJudge) {
         student = load_artifacts(id);
     } else {
+        // A render that never ends is stopped by the watchdog, which names the function still
+        // running. It cannot wait for the stuck code, so it finishes the checkpoint itself.
+        const Watchdog watchdog(watchdog_seconds(), [&](const StoppedCall& s) {
+            Artifacts stopped;
+            stopped.stopped = true;
+            stopped.stopped_call = s;
+            if (!s.picture.empty()) stopped.images["stopped"] = s.picture;
+            if (mode == Mode::kRender) {
+                save_artifacts(id, stopped);
+            } else {
+                Record r = rec;
+                const Finding f = stopped_finding(suite, s);
+                r.status = "fail";
+                r.concepts = f.topic;
+                r.findings.push_back(finding_line(suite, f));
+                r.hint = f.hint.empty() ? suite.hint(id) : f.hint;
+                std::cout << "checkpoint " << id << ": " << rec.title << needs << "\n  what is wrong:\n    "
+                          << r.findings.front() << "\n  hint: " << r.hint << "\n";
+                if (!s.picture.empty()) {
+                    const fs::path out = fs::path(env_or("RASTER_OUTPUT_DIR", "checkpoint_output")) / id;
+                    fs::create_directories(out);
+                    raster::write_png((out / "stopped.png").string(), s.picture);
+                    r.output_dir = fs::absolute(out).string();
+                    std::cout << "  picture when stopped: " << fs::absolute(out / "stopped.png").string() << "\n";
+                }
+                std::cout << "VERDICT " << id << " FAIL concepts=" << r.concepts << "\n";
+                write_record(r);
+            }
+            std::cout << std::flush;
+            std::fflush(nullptr);
+            std::_Exit(1);
+        });
         student = render_timed(suite.render_student, id);
     }
     if (mode == Mode::kRender) {
@@ -180,8 +336,12 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
     }
 
     // ---- judge half: from here on, no code under test runs ----
-    const Artifacts reference = render_timed(suite.render_reference, id);
-    Judgement judgement = suite.judge(id, student);
+    Judgement judgement;
+    if (student.stopped) {
+        judgement.findings.push_back(stopped_finding(suite, student.stopped_call));
+    } else {
+        judgement = suite.judge(id, student);
+    }
     std::vector<Finding>& findings = judgement.findings;
     if (student.values.count(kRunawayKey)) {
         findings.insert(findings.begin(),
@@ -189,6 +349,8 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
                                              " writes outside the image: a loop runs past its end point. "
                                              "Check the step signs and the loop's stop condition"});
     }
+    const std::vector<Finding> nothing = nothing_drawn_findings(suite, student, reference);
+    findings.insert(findings.begin(), nothing.begin(), nothing.end());
 
     const auto main_it = student.images.find("main");
     const std::string expected_path = expected_png_path(suite.milestone, id);
@@ -235,7 +397,7 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
                                   " may, because " + judgement.tolerance.why});
             }
         }
-    } else if (main_it == student.images.end()) {
+    } else if (main_it == student.images.end() && !student.stopped) {
         findings.push_back({"setup", "the render produced no main image"});
     }
 
@@ -250,7 +412,7 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
         }
     }
 
-    std::cout << "checkpoint " << id << ": " << rec.title << "\n" << report.str();
+    std::cout << "checkpoint " << id << ": " << rec.title << needs << "\n" << report.str();
     rec.measures = judgement.measures;
     for (const auto& [name, v] : judgement.measures) std::cout << "  " << name << ": " << v << "\n";
     std::cout << "  render time: yours " << std::fixed << std::setprecision(3) << rec.student_ms
@@ -277,18 +439,21 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
         std::cout << "  what is wrong:\n";
         const std::size_t shown = std::min<std::size_t>(findings.size(), 8);
         for (std::size_t i = 0; i < shown; ++i) {
-            std::cout << "    [" << findings[i].topic << "] " << findings[i].message << "\n";
+            std::cout << "    " << finding_line(suite, findings[i]) << "\n";
         }
         if (findings.size() > shown) {
             std::cout << "    ... and " << findings.size() - shown << " more\n";
         }
-        std::cout << "  hint: " << suite.hint(id) << "\n";
+        // The hint follows the first finding (the likeliest cause), not the scene: a scene that
+        // fails because a TODO it also needs is empty should say so, not hint at its own topic.
+        const std::string own = finding_hint(suite, findings.front());
+        rec.hint = own.empty() ? suite.hint(id) : own;
+        std::cout << "  hint: " << rec.hint << "\n";
         if (!expected.empty() && main_it != student.images.end()) {
             rec.diagnosis = diagnosis_for(suite.milestone, id, main_it->second, expected);
             if (!rec.diagnosis.empty()) std::cout << "  known bug: " << rec.diagnosis << "\n";
         }
-        rec.hint = suite.hint(id);
-        for (const Finding& f : findings) rec.findings.push_back("[" + f.topic + "] " + f.message);
+        for (const Finding& f : findings) rec.findings.push_back(finding_line(suite, f));
     }
     // One line that tools (and the project's own tests) can match.
     std::cout << "VERDICT " << id << " " << (findings.empty() ? "PASS" : "FAIL")
@@ -297,8 +462,8 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
     write_record(rec);
 
     if (!findings.empty()) {
-        FAIL_CHECK("checkpoint " << id << " failed: [" << findings.front().topic << "] "
-                                 << findings.front().message << " (all findings above)");
+        FAIL_CHECK("checkpoint " << id << " failed: " << finding_line(suite, findings.front())
+                                 << " (all findings above)");
     }
     SUCCEED();
 }

@@ -15,8 +15,11 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "raster/compare.h"
@@ -24,12 +27,37 @@
 
 namespace cp {
 
+// What one function of the code under test did during a render, counted by traced(): how
+// often the render half called it, and how many pixels those calls wrote inside the image
+// (Image::writes) and tried to write outside it (Image::stray_writes).
+struct FunctionTrace {
+    long long calls = 0;
+    long long writes = 0;
+    long long stray_writes = 0;
+};
+
+// Set when the watchdog stopped a render that ran too long: the function that was still
+// running then (empty when no function of the code under test was running), which of its
+// calls that was (1 = the first), and what that call had written so far.
+struct StoppedCall {
+    std::string function;
+    long long call = 0;
+    long long writes = 0;
+    long long stray_writes = 0;
+    double seconds = 0;  // how long the render had run
+    raster::Image picture;  // what that call's image held when it was stopped (may be empty)
+};
+
 // What the render half produces.
 struct Artifacts {
     std::map<std::string, raster::Image> images;  // "main" is compared with the expected PNG
     std::map<std::string, double> values;         // numbers a scene asks for (clip results...)
     long long stray_writes = 0;  // writes outside any image, summed (see Image::stray_writes)
     double seconds = 0;          // render time of the implementation (best of a few runs)
+    // Per function of the code under test (by name, e.g. "draw_line"): see traced().
+    std::map<std::string, FunctionTrace, std::less<>> trace;
+    bool stopped = false;  // the watchdog stopped the render; then stopped_call says where
+    StoppedCall stopped_call;
 };
 
 // Render halves give every image this stray-write budget (Image::limit_stray_writes) and,
@@ -51,9 +79,16 @@ struct Tolerance {
 // One thing the judge found wrong, in a student's words. `topic` is a short tag naming the
 // idea the student should revisit ("endpoint", "octant", "clipping", ...): the summary table
 // shows it, and the project's own tests check that each deliberate bug names its concept.
+//
+// `hint` and `todo` are optional. A finding that knows what the student should do about it
+// (e.g. "this TODO is not written yet") says so in `hint`; one that knows which TODO is at
+// fault says so in `todo` ("TODO 5", "TODOs 3-4"). Without them the harness looks the topic
+// up in Suite::topics, and only then falls back to the scene's hint.
 struct Finding {
     std::string topic;
     std::string message;
+    std::string hint = {};
+    std::string todo = {};
 };
 
 struct Judgement {
@@ -62,6 +97,24 @@ struct Judgement {
     // Numbers worth reporting beside the verdict (e.g. the coverage error against the exact
     // area), printed with the checkpoint and kept in its record and the JSON summary.
     std::map<std::string, double> measures;
+};
+
+// One function a student writes, as the checkpoints see it: its name (as the render half
+// passes it to traced()), the TODO numbers that implement it, the functions it calls in the
+// lesson's design (their TODOs are needed too), and what the watchdog says when this function
+// never returns: the concept tag and the usual cause.
+struct StudentFunction {
+    std::string name;
+    std::vector<int> todos;
+    std::vector<std::string> uses = {};
+    std::string loop_topic = {};   // default: "endless loop"
+    std::string loop_advice = {};  // e.g. "check that NaN input returns false"
+};
+
+// Advice for every finding with a given topic, when the finding carries none of its own.
+struct TopicAdvice {
+    std::string todo;  // "TODO 3", or empty
+    std::string hint;  // empty: no topic-wide hint
 };
 
 // Everything the harness needs to know about one milestone's checkpoints.
@@ -73,6 +126,8 @@ struct Suite {
     std::function<Artifacts(const std::string& id)> render_student;    // code under test
     std::function<Artifacts(const std::string& id)> render_reference;  // for timing only
     std::function<Judgement(const std::string& id, const Artifacts&)> judge;
+    std::vector<StudentFunction> functions;    // the milestone's TODO table (see traced())
+    std::map<std::string, TopicAdvice> topics;  // per-finding advice, by topic
 };
 
 // Registers one Catch2 test case per checkpoint of the suite (named by its id, tagged with
@@ -87,6 +142,65 @@ void run_checkpoint(const Suite& suite, const std::string& id);
 // and stores the main image as "main". Extra images a scene needs go into out.images.
 Artifacts render_guarded(int width, int height,
                          const std::function<void(raster::Image& main, Artifacts& out)>& draw);
+
+// ---- attribution: which function of the code under test drew what ----
+//
+// The render half wraps EVERY call into the code under test:
+//     cp::traced(out, "draw_line", img, [&] { m1::draw_line(img, a, b, c); });
+//     const bool kept = cp::traced(out, "clip_line", [&] { return m1::clip_line(a, b, r); });
+// Each call adds 1 to out.trace[name].calls and the writes it made into `img` (if given) to
+// out.trace[name].writes and .stray_writes, also when the call throws (StrayWriteLimit). While
+// the call runs, it is "the function currently running" that the watchdog names.
+class TracedCall {
+public:
+    TracedCall(Artifacts& out, std::string_view function, const raster::Image* img);
+    ~TracedCall();
+    TracedCall(const TracedCall&) = delete;
+    TracedCall& operator=(const TracedCall&) = delete;
+
+private:
+    FunctionTrace* entry_;
+    const raster::Image* img_;
+    long long writes0_ = 0, strays0_ = 0;
+};
+
+template <typename Fn>
+decltype(auto) traced(Artifacts& out, std::string_view function, const raster::Image& img, Fn&& fn) {
+    TracedCall call(out, function, &img);
+    return std::forward<Fn>(fn)();
+}
+
+template <typename Fn>
+decltype(auto) traced(Artifacts& out, std::string_view function, Fn&& fn) {
+    TracedCall call(out, function, nullptr);
+    return std::forward<Fn>(fn)();
+}
+
+// Stops a render that runs too long. While a Watchdog lives, a thread waits `seconds`; if the
+// Watchdog is still alive then, it calls on_stop with the function currently running (see
+// traced()) and what it has done. on_stop must end the process (std::_Exit): the stuck code
+// cannot be interrupted. Seconds come from RASTER_WATCHDOG_SECONDS (default 5), below CTest's
+// time-out, so a checkpoint that hangs fails with a message naming the function.
+class Watchdog {
+public:
+    Watchdog(double seconds, std::function<void(const StoppedCall&)> on_stop);
+    ~Watchdog();
+    Watchdog(const Watchdog&) = delete;
+    Watchdog& operator=(const Watchdog&) = delete;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+double watchdog_seconds();  // RASTER_WATCHDOG_SECONDS, default 5
+
+// "1-4, 6" for {1, 2, 3, 4, 6}; "TODO 5" / "TODOs 3-4" with todo_label.
+std::string todo_list(std::vector<int> todos);
+std::string todo_label(const std::vector<int>& todos);
+
+// The TODOs a scene needs: those of every function the reference called on it (calls > 0),
+// and of the functions those use, transitively.
+std::vector<int> needed_todos(const Suite& suite, const Artifacts& reference);
 
 // A fresh image for a render half's extra pictures, with the stray-write budget set.
 raster::Image guarded_image(int width, int height);
@@ -110,7 +224,8 @@ const Scene& find_scene(const std::vector<Scene>& all, const std::string& id) {
 template <typename Scene>
 Suite make_suite(std::string milestone, const std::vector<Scene>& (*scenes)(),
                  Artifacts (*render_student)(const std::string&), Artifacts (*render_reference)(const std::string&),
-                 Judgement (*judge)(const std::string&, const Artifacts&)) {
+                 Judgement (*judge)(const std::string&, const Artifacts&),
+                 std::vector<StudentFunction> functions = {}, std::map<std::string, TopicAdvice> topics = {}) {
     Suite s;
     s.milestone = std::move(milestone);
     for (const Scene& scene : scenes()) s.ids.push_back(scene.id);
@@ -119,6 +234,8 @@ Suite make_suite(std::string milestone, const std::vector<Scene>& (*scenes)(),
     s.render_student = render_student;
     s.render_reference = render_reference;
     s.judge = judge;
+    s.functions = std::move(functions);
+    s.topics = std::move(topics);
     return s;
 }
 

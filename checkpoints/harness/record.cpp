@@ -54,6 +54,7 @@ void write_record(const Record& r) {
     for (const std::string& f : r.findings) out << "finding\t" << f << "\n";
     if (!r.hint.empty()) out << "hint\t" << r.hint << "\n";
     if (!r.diagnosis.empty()) out << "diagnosis\t" << r.diagnosis << "\n";
+    if (!r.todos.empty()) out << "todos\t" << r.todos << "\n";
 }
 
 std::vector<Record> read_records(const std::string& dir) {
@@ -84,6 +85,7 @@ std::vector<Record> read_records(const std::string& dir) {
             else if (key == "finding") r.findings.push_back(v);
             else if (key == "hint") r.hint = v;
             else if (key == "diagnosis") r.diagnosis = v;
+            else if (key == "todos") r.todos = v;
         }
         if (!r.id.empty()) records.push_back(r);
     }

@@ -24,6 +24,7 @@ struct Record {
     std::vector<std::string> findings;       // "[topic] message", as printed
     std::string hint;
     std::string diagnosis;  // "your picture matches what happens ..." (see diagnosis.h), or empty
+    std::string todos;  // the TODOs the scene needs, e.g. "1-4, 6" (see cp::needed_todos)
 };
 
 void write_record(const Record& r);  // into $RASTER_RESULTS_DIR (default: checkpoint_results)

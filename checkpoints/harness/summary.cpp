@@ -67,7 +67,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
             ".pass{color:#6c6}.fail{color:#f66}.crashed{color:#fa0}"
             "img{image-rendering:pixelated;width:192px;border:1px solid #555;margin-right:6px}</style>\n"
             "<h1>Checkpoints</h1>\n<table><tr><th>checkpoint<th>result<th>pixels differ<th>mean error"
-            "<th>your ms<th>reference ms<th>concepts</tr>\n";
+            "<th>your ms<th>reference ms<th>needs TODOs<th>concepts</tr>\n";
     for (const cp::Record& r : records) {
         html << "<tr><td><a href=\"#" << html_escape(r.id) << "\">" << html_escape(r.id) << "</a><td class=" << r.status
              << ">" << r.status;
@@ -77,7 +77,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         } else {
             html << "<td>-<td>-<td>-<td>-";
         }
-        html << "<td>" << html_escape(r.concepts) << "</tr>\n";
+        html << "<td>" << html_escape(r.todos) << "<td>" << html_escape(r.concepts) << "</tr>\n";
     }
     html << "</table>\n";
     bool any_measure = false;
@@ -94,6 +94,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         if (r.status == "pass") continue;
         html << "<h2 id=\"" << html_escape(r.id) << "\">" << html_escape(r.id) << ": " << html_escape(r.title)
              << "</h2>\n<p class=" << r.status << ">" << r.status << " " << html_escape(r.concepts) << "</p>\n";
+        if (!r.todos.empty()) html << "<p>needs TODOs " << html_escape(r.todos) << "</p>\n";
         if (!r.findings.empty()) {
             html << "<ul>";
             for (const std::string& f : r.findings) html << "<li>" << html_escape(f) << "</li>";
@@ -106,7 +107,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
             continue;
         }
         html << "<p>";
-        for (const char* name : {"actual", "expected", "diff", "reversed", "other_winding", "count"}) {
+        for (const char* name : {"actual", "expected", "diff", "reversed", "other_winding", "count", "stopped"}) {
             const std::filesystem::path p = std::filesystem::path(r.output_dir) / (std::string(name) + ".png");
             if (std::filesystem::exists(p)) {
                 html << "<figure style=\"display:inline-block;margin:0 8px 0 0\"><img src=\"" << html_escape(p.string())
@@ -195,6 +196,7 @@ int main(int argc, char** argv) {
             json << (k ? ", " : "") << "\"" << json_escape(r.findings[k]) << "\"";
         }
         json << "], \"hint\": \"" << json_escape(r.hint) << "\", \"diagnosis\": \"" << json_escape(r.diagnosis)
+             << "\", \"todos\": \"" << json_escape(r.todos)
              << "\", \"pictures\": \"" << json_escape(r.output_dir) << "\"}"
              << (i + 1 < records.size() ? "," : "") << "\n";
     }

@@ -1,7 +1,12 @@
 // The parts of the harness that need no test framework (used by the demos and tools too).
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
+#include <mutex>
+#include <set>
+#include <thread>
 
 #include "harness/checkpoint.h"
 #include "raster/timer.h"
@@ -9,6 +14,147 @@
 namespace fs = std::filesystem;
 
 namespace cp {
+
+namespace {
+
+// The call of the code under test that is running now, for the watchdog. Guarded by a mutex:
+// the watchdog holds it while it reports, so the call (and the image it draws into) cannot
+// end under its feet.
+struct Running {
+    std::mutex mutex;
+    const std::string* function = nullptr;  // a key of the running call's trace; null: none
+    long long call = 0;
+    const raster::Image* img = nullptr;
+    long long writes0 = 0, strays0 = 0;
+};
+
+Running& running() {
+    static Running r;
+    return r;
+}
+
+}  // namespace
+
+TracedCall::TracedCall(Artifacts& out, std::string_view function, const raster::Image* img) : img_(img) {
+    auto it = out.trace.find(function);
+    if (it == out.trace.end()) it = out.trace.emplace(std::string(function), FunctionTrace{}).first;
+    entry_ = &it->second;
+    if (img_ != nullptr) {
+        writes0_ = img_->writes();
+        strays0_ = img_->stray_writes();
+    }
+    Running& r = running();
+    const std::lock_guard<std::mutex> lock(r.mutex);
+    r.function = &it->first;
+    r.call = entry_->calls + 1;
+    r.img = img_;
+    r.writes0 = writes0_;
+    r.strays0 = strays0_;
+}
+
+TracedCall::~TracedCall() {
+    Running& r = running();
+    const std::lock_guard<std::mutex> lock(r.mutex);
+    r.function = nullptr;
+    r.img = nullptr;
+    entry_->calls += 1;
+    if (img_ != nullptr) {
+        entry_->writes += img_->writes() - writes0_;
+        entry_->stray_writes += img_->stray_writes() - strays0_;
+    }
+}
+
+struct Watchdog::State {
+    std::mutex mutex;
+    std::condition_variable cv;
+    bool done = false;
+    std::thread thread;
+};
+
+Watchdog::Watchdog(double seconds, std::function<void(const StoppedCall&)> on_stop)
+    : state_(std::make_unique<State>()) {
+    State* st = state_.get();
+    st->thread = std::thread([st, seconds, on_stop = std::move(on_stop)] {
+        const auto start = std::chrono::steady_clock::now();
+        {
+            std::unique_lock<std::mutex> lock(st->mutex);
+            if (st->cv.wait_for(lock, std::chrono::duration<double>(seconds), [st] { return st->done; })) return;
+        }
+        Running& r = running();
+        const std::lock_guard<std::mutex> lock(r.mutex);  // held until on_stop ends the process
+        StoppedCall s;
+        if (r.function != nullptr) {
+            s.function = *r.function;
+            s.call = r.call;
+        }
+        if (r.function != nullptr && r.img != nullptr) {
+            s.writes = r.img->writes() - r.writes0;
+            s.stray_writes = r.img->stray_writes() - r.strays0;
+            // The stuck call may still be writing pixels while they are copied: at worst a
+            // pixel of the picture is one write behind. The image's size never changes.
+            s.picture = *r.img;
+        }
+        s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        on_stop(s);
+        std::_Exit(1);  // on_stop should not return; if it does, still stop
+    });
+}
+
+Watchdog::~Watchdog() {
+    {
+        const std::lock_guard<std::mutex> lock(state_->mutex);
+        state_->done = true;
+    }
+    state_->cv.notify_all();
+    state_->thread.join();
+}
+
+double watchdog_seconds() {
+    const double s = std::strtod(env_or("RASTER_WATCHDOG_SECONDS", "5").c_str(), nullptr);
+    return s > 0 ? s : 5;
+}
+
+std::string todo_list(std::vector<int> todos) {
+    std::sort(todos.begin(), todos.end());
+    todos.erase(std::unique(todos.begin(), todos.end()), todos.end());
+    std::string out;
+    for (std::size_t i = 0; i < todos.size();) {
+        std::size_t j = i;
+        while (j + 1 < todos.size() && todos[j + 1] == todos[j] + 1) ++j;
+        out += (out.empty() ? "" : ", ") + std::to_string(todos[i]);
+        if (j > i) out += "-" + std::to_string(todos[j]);
+        i = j + 1;
+    }
+    return out;
+}
+
+std::string todo_label(const std::vector<int>& todos) {
+    const std::string list = todo_list(todos);
+    if (list.empty()) return "";
+    return (list.find_first_of("-,") == std::string::npos ? "TODO " : "TODOs ") + list;
+}
+
+std::vector<int> needed_todos(const Suite& suite, const Artifacts& reference) {
+    std::set<std::string> seen;
+    std::vector<std::string> queue;
+    for (const auto& [name, t] : reference.trace) {
+        if (t.calls > 0) queue.push_back(name);
+    }
+    std::vector<int> todos;
+    while (!queue.empty()) {
+        const std::string name = queue.back();
+        queue.pop_back();
+        if (!seen.insert(name).second) continue;
+        for (const StudentFunction& f : suite.functions) {
+            if (f.name != name) continue;
+            todos.insert(todos.end(), f.todos.begin(), f.todos.end());
+            queue.insert(queue.end(), f.uses.begin(), f.uses.end());
+        }
+    }
+    std::sort(todos.begin(), todos.end());
+    todos.erase(std::unique(todos.begin(), todos.end()), todos.end());
+    return todos;
+}
 
 std::string env_or(const char* name, const std::string& fallback) {
     const char* v = std::getenv(name);

@@ -2,6 +2,7 @@
 // Run them with `make check-m1`, or run this program with a checkpoint name
 // (e.g. `./checkpoints_m1 m1.octant_3`) to debug one of them.
 #include "harness/checkpoint.h"
+#include "m1/functions.h"
 #include "m1/judge.h"
 #include "m1/render.h"
 #include "m1/scenes.h"
@@ -9,6 +10,7 @@
 namespace {
 
 [[maybe_unused]] const bool registered = cp::register_suite(
-    cp::make_suite("m1", m1cp::scenes, m1cp::student::render, m1cp::reference::render, m1cp::judge));
+    cp::make_suite("m1", m1cp::scenes, m1cp::student::render, m1cp::reference::render, m1cp::judge,
+                   m1cp::functions()));
 
 }  // namespace

@@ -12,50 +12,57 @@ namespace {
 
 m1::Rect to_rect(const Box& b) { return {b.xmin, b.ymin, b.xmax, b.ymax}; }
 
-void draw(raster::Image& img, const Segment& s, bool reversed) {
+// Every call into the code under test goes through cp::traced, which counts its calls and
+// the pixels it writes, per function (see harness/checkpoint.h).
+void line(cp::Artifacts& out, raster::Image& img, Vec2 a, Vec2 b, Color c) {
+    cp::traced(out, "draw_line", img, [&] { m1::draw_line(img, a, b, c); });
+}
+
+void draw(cp::Artifacts& out, raster::Image& img, const Segment& s, bool reversed) {
     const Vec2 a = reversed ? s.b : s.a;
     const Vec2 b = reversed ? s.a : s.b;
     if (s.aa) {
-        m1::draw_line_aa(img, a, b, s.color);
+        cp::traced(out, "draw_line_aa", img, [&] { m1::draw_line_aa(img, a, b, s.color); });
     } else {
-        m1::draw_line(img, a, b, s.color);
+        line(out, img, a, b, s.color);
     }
 }
 
 void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
     switch (s.kind) {
         case Kind::kLines:
-            for (const Segment& seg : s.lines) draw(img, seg, false);
+            for (const Segment& seg : s.lines) draw(out, img, seg, false);
             if (s.check_reversed) {
                 raster::Image& rev = out.images["reversed"] = cp::guarded_image(s.width, s.height);
-                for (const Segment& seg : s.lines) draw(rev, seg, true);
+                for (const Segment& seg : s.lines) draw(out, rev, seg, true);
             }
             break;
         case Kind::kOutcodes: {
             const m1::Rect r = to_rect(s.viewport);
             for (int y = 0; y < s.height; ++y) {
                 for (int x = 0; x < s.width; ++x) {
-                    img.set(x, y, outcode_color(m1::outcode({x + 0.5, y + 0.5}, r)));
+                    const int code = cp::traced(out, "outcode", [&] { return m1::outcode({x + 0.5, y + 0.5}, r); });
+                    img.set(x, y, outcode_color(code));
                 }
             }
             break;
         }
         case Kind::kClip: {
             const m1::Rect r = to_rect(s.viewport);
-            for (const Segment& seg : s.lines) m1::draw_line(img, seg.a, seg.b, kUnclippedColor);
+            for (const Segment& seg : s.lines) line(out, img, seg.a, seg.b, kUnclippedColor);
             const Box& v = s.viewport;
             const Vec2 corners[] = {{v.xmin, v.ymin}, {v.xmax, v.ymin}, {v.xmax, v.ymax}, {v.xmin, v.ymax}};
-            for (int k = 0; k < 4; ++k) m1::draw_line(img, corners[k], corners[(k + 1) % 4], kViewportColor);
+            for (int k = 0; k < 4; ++k) line(out, img, corners[k], corners[(k + 1) % 4], kViewportColor);
             for (std::size_t i = 0; i < s.lines.size(); ++i) {
                 Vec2 a = s.lines[i].a, b = s.lines[i].b;
-                const bool kept = m1::clip_line(a, b, r);
+                const bool kept = cp::traced(out, "clip_line", [&] { return m1::clip_line(a, b, r); });
                 const std::string key = "clip." + std::to_string(i) + ".";
                 out.values[key + "kept"] = kept;
                 out.values[key + "ax"] = a.x;
                 out.values[key + "ay"] = a.y;
                 out.values[key + "bx"] = b.x;
                 out.values[key + "by"] = b.y;
-                if (kept) m1::draw_line(img, a, b, s.lines[i].color);
+                if (kept) line(out, img, a, b, s.lines[i].color);
             }
             break;
         }

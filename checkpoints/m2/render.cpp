@@ -13,15 +13,20 @@ namespace RASTER_FLAVOUR {
 namespace {
 
 // flip: list the vertices in the other order (v0, v2, v1), which reverses the winding.
-void draw(raster::Image& img, const Tri& t, bool flip, bool white) {
+// Every call into the code under test goes through cp::traced, which counts its calls and
+// the pixels it writes, per function (see harness/checkpoint.h).
+void draw(cp::Artifacts& out, raster::Image& img, const Tri& t, bool flip, bool white) {
     const int i1 = flip ? 2 : 1, i2 = flip ? 1 : 2;
     const Color c0 = white ? raster::colors::white : t.c[0];
     if (t.aa > 0) {
-        m2::fill_triangle_aa(img, t.v[0], t.v[i1], t.v[i2], c0, t.aa);
+        cp::traced(out, "fill_triangle_aa", img,
+                   [&] { m2::fill_triangle_aa(img, t.v[0], t.v[i1], t.v[i2], c0, t.aa); });
     } else if (t.gradient && !white) {
-        m2::fill_triangle_gradient(img, t.v[0], t.v[i1], t.v[i2], t.c[0], t.c[i1], t.c[i2]);
+        cp::traced(out, "fill_triangle_gradient", img, [&] {
+            m2::fill_triangle_gradient(img, t.v[0], t.v[i1], t.v[i2], t.c[0], t.c[i1], t.c[i2]);
+        });
     } else {
-        m2::fill_triangle(img, t.v[0], t.v[i1], t.v[i2], c0);
+        cp::traced(out, "fill_triangle", img, [&] { m2::fill_triangle(img, t.v[0], t.v[i1], t.v[i2], c0); });
     }
 }
 
@@ -29,10 +34,10 @@ void draw(raster::Image& img, const Tri& t, bool flip, bool white) {
 m2::Fixed fixed(Vec2 p) { return {std::llround(p.x * m2::kSubpixelSteps), std::llround(p.y * m2::kSubpixelSteps)}; }
 
 void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
-    for (const Tri& t : s.tris) draw(img, t, false, false);
+    for (const Tri& t : s.tris) draw(out, img, t, false, false);
     if (s.check_winding) {
         raster::Image& other = out.images["other_winding"] = cp::guarded_image(s.width, s.height);
-        for (const Tri& t : s.tris) draw(other, t, true, false);
+        for (const Tri& t : s.tris) draw(out, other, t, true, false);
     }
     if (s.watertight) {
         // How many triangles cover each pixel: each is drawn alone in white, then counted.
@@ -40,7 +45,7 @@ void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
         raster::Image& count = out.images["count"] = raster::Image(s.width, s.height);
         for (const Tri& t : s.tris) {
             raster::Image alone = cp::guarded_image(s.width, s.height);
-            draw(alone, t, false, true);
+            draw(out, alone, t, false, true);
             out.stray_writes += alone.stray_writes();
             for (int y = 0; y < s.height; ++y) {
                 for (int x = 0; x < s.width; ++x) {
@@ -55,7 +60,7 @@ void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
     }
     for (std::size_t i = 0; i < s.numbers.snaps.size(); ++i) {
         m2::Fixed f{-1, -1};
-        const bool ok = m2::snap(s.numbers.snaps[i], f);
+        const bool ok = cp::traced(out, "snap", [&] { return m2::snap(s.numbers.snaps[i], f); });
         const std::string key = "snap." + std::to_string(i) + ".";
         out.values[key + "ok"] = ok;
         out.values[key + "x"] = double(f.x);
@@ -64,13 +69,14 @@ void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
     for (std::size_t i = 0; i < s.numbers.boxes.size(); ++i) {
         const auto& v = s.numbers.boxes[i];
         const m2::Fixed a = fixed(v[0]), b = fixed(v[1]), c = fixed(v[2]);
-        const m2::PixelRect r = m2::bounding_box(a, b, c, s.width, s.height);
+        const m2::PixelRect r =
+            cp::traced(out, "bounding_box", [&] { return m2::bounding_box(a, b, c, s.width, s.height); });
         const std::string key = "box." + std::to_string(i) + ".";
         out.values[key + "x0"] = r.x0;
         out.values[key + "y0"] = r.y0;
         out.values[key + "x1"] = r.x1;
         out.values[key + "y1"] = r.y1;
-        out.values["edge." + std::to_string(i)] = double(m2::edge(a, b, c));
+        out.values["edge." + std::to_string(i)] = double(cp::traced(out, "edge", [&] { return m2::edge(a, b, c); }));
     }
 }
 

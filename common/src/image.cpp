@@ -28,15 +28,49 @@ Color Image::at(int x, int y) const {
     return {p[0], p[1], p[2]};
 }
 
-void Image::set(int x, int y, Color c) {
-    if (!in_bounds(x, y)) {
-        count_stray_write();
-        return;
+Image::Image(const Image& other)
+    : width_(other.width_),
+      height_(other.height_),
+      bytes_(other.bytes_),
+      writes_(other.writes()),
+      stray_writes_(other.stray_writes_),
+      stray_limit_(other.stray_limit_) {}
+
+Image& Image::operator=(const Image& other) {
+    if (this != &other) {
+        width_ = other.width_;
+        height_ = other.height_;
+        bytes_ = other.bytes_;
+        writes_.store(other.writes(), std::memory_order_relaxed);
+        stray_writes_ = other.stray_writes_;
+        stray_limit_ = other.stray_limit_;
     }
-    std::uint8_t* p = &bytes_[offset(x, y)];
-    p[0] = c.r;
-    p[1] = c.g;
-    p[2] = c.b;
+    return *this;
+}
+
+Image::Image(Image&& other) noexcept
+    : width_(other.width_),
+      height_(other.height_),
+      bytes_(std::move(other.bytes_)),
+      writes_(other.writes()),
+      stray_writes_(other.stray_writes_),
+      stray_limit_(other.stray_limit_) {
+    other.width_ = other.height_ = 0;
+    other.bytes_.clear();
+}
+
+Image& Image::operator=(Image&& other) noexcept {
+    if (this != &other) {
+        width_ = other.width_;
+        height_ = other.height_;
+        bytes_ = std::move(other.bytes_);
+        writes_.store(other.writes(), std::memory_order_relaxed);
+        stray_writes_ = other.stray_writes_;
+        stray_limit_ = other.stray_limit_;
+        other.width_ = other.height_ = 0;
+        other.bytes_.clear();
+    }
+    return *this;
 }
 
 void Image::blend(int x, int y, Color c, double coverage) {
@@ -44,6 +78,7 @@ void Image::blend(int x, int y, Color c, double coverage) {
         count_stray_write();
         return;
     }
+    count_write();
     std::uint8_t* p = &bytes_[offset(x, y)];
     const Color mixed = mix({p[0], p[1], p[2]}, c, coverage);
     p[0] = mixed.r;

@@ -60,6 +60,11 @@ TEST_CASE("image: size limits, pixel access, stray writes") {
     CHECK_THROWS_AS(img.at(4, 0), std::out_of_range);
     img.blend(0, 0, colors::white, 0.5);
     CHECK(img.at(0, 0) == Color{128, 128, 255});
+    CHECK(img.writes() == 2);  // set(1, 2) and blend(0, 0); stray writes are not counted
+    img.fill(colors::black);
+    const Image copy = img;
+    CHECK(copy.writes() == 2);
+    CHECK(copy.stray_writes() == 3);
 }
 
 TEST_CASE("PNG and PPM: round trip, clear errors for missing and corrupt files") {

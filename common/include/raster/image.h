@@ -13,8 +13,12 @@
 // The checkpoints also set a stray-write budget (limit_stray_writes): a loop that runs past
 // its end writes outside the image forever, and the budget stops it with StrayWriteLimit
 // instead of letting it hang.
+//
+// Every write inside the image (set() or blend()) is counted too (writes()). The checkpoints
+// use the count to tell which function drew what, e.g. "fill_triangle_gradient drew nothing".
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -39,6 +43,10 @@ public:
     Image() = default;
     // Throws std::invalid_argument unless 1 <= width, height <= kMaxSide.
     Image(int width, int height, Color background = colors::black);
+    Image(const Image& other);
+    Image& operator=(const Image& other);
+    Image(Image&& other) noexcept;
+    Image& operator=(Image&& other) noexcept;
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -50,7 +58,17 @@ public:
     Color at(int x, int y) const;
 
     // Pixel write. Outside the image: ignored and counted in stray_writes().
-    void set(int x, int y, Color c);
+    void set(int x, int y, Color c) {
+        if (!in_bounds(x, y)) {
+            count_stray_write();
+            return;
+        }
+        count_write();
+        std::uint8_t* p = &bytes_[offset(x, y)];
+        p[0] = c.r;
+        p[1] = c.g;
+        p[2] = c.b;
+    }
 
     // Linear blend of c over the current pixel: new = old + coverage * (c - old), rounded to
     // nearest; coverage is clamped to [0, 1] and NaN counts as 0. Outside: ignored and counted.
@@ -58,6 +76,9 @@ public:
 
     void fill(Color c);
 
+    // How many set() and blend() calls landed inside the image (fill() is not counted).
+    // Another thread may read it while this one draws (the checkpoints' watchdog does).
+    long long writes() const { return writes_.load(std::memory_order_relaxed); }
     long long stray_writes() const { return stray_writes_; }
     // After `limit` stray writes, the next one throws StrayWriteLimit (default: no limit).
     void limit_stray_writes(long long limit) { stray_limit_ = limit; }
@@ -76,6 +97,11 @@ private:
     int height_ = 0;
     std::vector<std::uint8_t> bytes_;
     void count_stray_write();
+    // A relaxed load and store, not an atomic increment: as cheap as a plain counter (only
+    // the drawing thread writes it), yet safe to read from another thread.
+    void count_write() { writes_.store(writes_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed); }
+
+    std::atomic<long long> writes_{0};
 
     long long stray_writes_ = 0;
     long long stray_limit_ = std::numeric_limits<long long>::max();
