@@ -166,7 +166,8 @@ BugRun run_bug(const BugSource& bug, const fs::path& work) {
     r.artifacts = dir / "artifacts";
     const std::string exe = shell_quote(bug.program.string());
     const std::string render = "cd " + shell_quote(dir.string()) +
-                               " && RASTER_CHECKPOINT_MODE=render RASTER_ARTIFACTS_DIR=" + shell_quote(r.artifacts.string()) +
+                               " && RASTER_WATCHDOG_SECONDS=1 RASTER_CHECKPOINT_MODE=render RASTER_ARTIFACTS_DIR=" +
+                               shell_quote(r.artifacts.string()) +
                                " timeout 60 " + exe;
     run(render + " > render.log 2>&1");
     for (const std::string& id : r.ids) {

@@ -217,7 +217,6 @@ std::string finding_line(const Suite& suite, const Finding& f) {
 // The finding for a render the watchdog stopped.
 Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
     std::ostringstream msg;
-    msg << std::fixed << std::setprecision(1);
     if (s.function.empty()) {
         msg << "the render did not finish within " << s.seconds
             << " s, and none of your functions was running: a loop outside them (report this to your teacher)";

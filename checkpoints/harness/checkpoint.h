@@ -44,7 +44,7 @@ struct StoppedCall {
     long long call = 0;
     long long writes = 0;
     long long stray_writes = 0;
-    double seconds = 0;  // how long the render had run
+    double seconds = 0;  // the watchdog's limit, which the render had run past
     raster::Image picture;  // what that call's image held when it was stopped (may be empty)
 };
 
