@@ -6,6 +6,7 @@
 // like yours), so that every verdict here is about transforms: a bug left in your lines or
 // triangles cannot fail a checkpoint of milestone 3. demo_m3 uses your own code throughout.
 #include "harness/checkpoint.h"
+#include "m3/functions.h"
 #include "m3/judge.h"
 #include "m3/render.h"
 #include "m3/scenes.h"
@@ -13,6 +14,7 @@
 namespace {
 
 [[maybe_unused]] const bool registered = cp::register_suite(
-    cp::make_suite("m3", m3cp::scenes, m3cp::student::render, m3cp::reference::render, m3cp::judge));
+    cp::make_suite("m3", m3cp::scenes, m3cp::student::render, m3cp::reference::render, m3cp::judge,
+                   m3cp::functions(), m3cp::topics()));
 
 }  // namespace

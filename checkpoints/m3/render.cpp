@@ -16,6 +16,14 @@ namespace {
 using m3::Mat4;
 using Values = std::map<std::string, double>;
 
+// Every call into the code under test goes through cp::traced (which function ran, what it
+// drew, what the watchdog names if it never returns): CALL("name", expression). The products
+// are traced as "operator*".
+cp::Artifacts* g_out = nullptr;
+#define CALL(name, ...) cp::traced(*g_out, name, [&] { return __VA_ARGS__; })
+Mat4 mul(const Mat4& a, const Mat4& b) { return CALL("operator*", a * b); }
+Vec4 mul(const Mat4& a, Vec4 v) { return CALL("operator*", a * v); }
+
 Mat4 to_mat4(const Matrix& a) {
     Mat4 r;
     for (int i = 0; i < 4; ++i) {
@@ -53,34 +61,34 @@ void numbers(Group g, Values& v) {
         case Group::kMatrixOps: {
             const Mat4 a = to_mat4({{{1, 2, 0, 4}, {0, 1, 3, 0}, {2, 0, 1, -1}, {0, 0, 0, 1}}});
             const Mat4 b = to_mat4({{{0, 1, 0, 2}, {1, 0, 0, 0}, {0, 0, 2, 1}, {0, 0, 0, 1}}});
-            put(v, "ab", a * b);
-            put(v, "at", m3::transpose(a));
-            put(v, "av", a * Vec4{1, 2, 3, 1});
-            put(v, "pt", m3::transform_point(a, {1, 2, 3}));
-            put(v, "dir", m3::transform_direction(a, {1, 2, 3}));
+            put(v, "ab", mul(a, b));
+            put(v, "at", CALL("transpose", m3::transpose(a)));
+            put(v, "av", mul(a, Vec4{1, 2, 3, 1}));
+            put(v, "pt", CALL("transform_point", m3::transform_point(a, {1, 2, 3})));
+            put(v, "dir", CALL("transform_direction", m3::transform_direction(a, {1, 2, 3})));
             break;
         }
         case Group::kBuilders:
-            put(v, "translate", m3::translate({1, -2, 3}));
-            put(v, "scale", m3::scale({2, 3, 4}));
-            put(v, "rx", m3::rotate_x(0.3));
-            put(v, "ry", m3::rotate_y(0.3));
-            put(v, "rz", m3::rotate_z(0.3));
-            put(v, "rz90", m3::transform_point(m3::rotate_z(pi / 2), {1, 0, 0}));
-            put(v, "rx90", m3::transform_point(m3::rotate_x(pi / 2), {0, 1, 0}));
-            put(v, "ry90", m3::transform_point(m3::rotate_y(pi / 2), {0, 0, 1}));
+            put(v, "translate", CALL("translate", m3::translate({1, -2, 3})));
+            put(v, "scale", CALL("scale", m3::scale({2, 3, 4})));
+            put(v, "rx", CALL("rotate_x", m3::rotate_x(0.3)));
+            put(v, "ry", CALL("rotate_y", m3::rotate_y(0.3)));
+            put(v, "rz", CALL("rotate_z", m3::rotate_z(0.3)));
+            put(v, "rz90", CALL("transform_point", m3::transform_point(CALL("rotate_z", m3::rotate_z(pi / 2)), {1, 0, 0})));
+            put(v, "rx90", CALL("transform_point", m3::transform_point(CALL("rotate_x", m3::rotate_x(pi / 2)), {0, 1, 0})));
+            put(v, "ry90", CALL("transform_point", m3::transform_point(CALL("rotate_y", m3::rotate_y(pi / 2)), {0, 0, 1})));
             break;
         case Group::kRodrigues:
-            put(v, "r111", m3::rotate({1, 1, 1}, 2 * pi / 3));
-            put(v, "rz", m3::rotate({0, 0, 2}, 0.7));
-            put(v, "zero", m3::rotate({0, 0, 0}, 1.0));
-            put(v, "general", m3::rotate({1, -2, 0.5}, 1.3));
+            put(v, "r111", CALL("rotate", m3::rotate({1, 1, 1}, 2 * pi / 3)));
+            put(v, "rz", CALL("rotate", m3::rotate({0, 0, 2}, 0.7)));
+            put(v, "zero", CALL("rotate", m3::rotate({0, 0, 0}, 1.0)));
+            put(v, "general", CALL("rotate", m3::rotate({1, -2, 0.5}, 1.3)));
             break;
         case Group::kComposition:
-            put(v, "tr", m3::transform_point(m3::translate({3, 0, 0}) * m3::rotate_z(pi / 2), {1, 0, 0}));
-            put(v, "rt", m3::transform_point(m3::rotate_z(pi / 2) * m3::translate({3, 0, 0}), {1, 0, 0}));
-            put(v, "srt", m3::transform_point(m3::translate({0, 0, -5}) * m3::rotate_x(pi / 2) * m3::scale({2, 2, 2}),
-                                              {0, 1, 0}));
+            put(v, "tr", CALL("transform_point", m3::transform_point(mul(CALL("translate", m3::translate({3, 0, 0})), CALL("rotate_z", m3::rotate_z(pi / 2))), {1, 0, 0})));
+            put(v, "rt", CALL("transform_point", m3::transform_point(mul(CALL("rotate_z", m3::rotate_z(pi / 2)), CALL("translate", m3::translate({3, 0, 0}))), {1, 0, 0})));
+            put(v, "srt", CALL("transform_point", m3::transform_point(mul(mul(CALL("translate", m3::translate({0, 0, -5})), CALL("rotate_x", m3::rotate_x(pi / 2))), CALL("scale", m3::scale({2, 2, 2}))),
+                                              {0, 1, 0})));
             break;
         case Group::kInverse: {
             const Matrix cases[] = {
@@ -92,66 +100,66 @@ void numbers(Group g, Values& v) {
             };
             for (int k = 0; k < 5; ++k) {
                 Mat4 out = to_mat4({{{-7, -7, -7, -7}, {-7, -7, -7, -7}, {-7, -7, -7, -7}, {-7, -7, -7, -7}}});
-                v["inv" + std::to_string(k) + ".ok"] = m3::inverse(to_mat4(cases[k]), out);
+                v["inv" + std::to_string(k) + ".ok"] = CALL("inverse", m3::inverse(to_mat4(cases[k]), out));
                 put(v, "inv" + std::to_string(k), out);
             }
             const double c = std::cos(0.5), s = std::sin(0.5);
-            put(v, "rigid", m3::rigid_inverse(to_mat4({{{c, -s, 0, 3}, {s, c, 0, -1}, {0, 0, 1, 2}, {0, 0, 0, 1}}})));
+            put(v, "rigid", CALL("rigid_inverse", m3::rigid_inverse(to_mat4({{{c, -s, 0, 3}, {s, c, 0, -1}, {0, 0, 1, 2}, {0, 0, 0, 1}}}))));
             break;
         }
         case Group::kNearSingular: {
             Mat4 out;
-            v["ok"] = m3::inverse(to_mat4(near_singular_matrix()), out);
+            v["ok"] = CALL("inverse", m3::inverse(to_mat4(near_singular_matrix()), out));
             put(v, "inv", out);
             break;
         }
         case Group::kLookAt:
-            put(v, "plain", m3::look_at({1, 2, 3}, {0, 0, 0}, {0, 1, 0}));
-            put(v, "general", m3::look_at({-2, 1, 4}, {1, 0.5, -1}, {0.2, 1, 0.1}));
-            put(v, "down", m3::look_at({0, 5, 0}, {0, 0, 0}, {0, 1, 0}));
-            put(v, "same", m3::look_at({1, 1, 1}, {1, 1, 1}, {0, 1, 0}));
-            put(v, "noup", m3::look_at({3, 0, 0}, {0, 0, 0}, {0, 0, 0}));
+            put(v, "plain", CALL("look_at", m3::look_at({1, 2, 3}, {0, 0, 0}, {0, 1, 0})));
+            put(v, "general", CALL("look_at", m3::look_at({-2, 1, 4}, {1, 0.5, -1}, {0.2, 1, 0.1})));
+            put(v, "down", CALL("look_at", m3::look_at({0, 5, 0}, {0, 0, 0}, {0, 1, 0})));
+            put(v, "same", CALL("look_at", m3::look_at({1, 1, 1}, {1, 1, 1}, {0, 1, 0})));
+            put(v, "noup", CALL("look_at", m3::look_at({3, 0, 0}, {0, 0, 0}, {0, 0, 0})));
             break;
         case Group::kProjection: {
-            put(v, "persp", m3::perspective(90, 2, 1, 10));
-            put(v, "persp60", m3::perspective(60, 1.5, 0.5, 50));
-            put(v, "fov1", m3::perspective(1, 1, 0.1, 10));
-            put(v, "fov179", m3::perspective(179, 1, 0.1, 10));
-            put(v, "ortho", m3::orthographic(-2, 2, -1, 1, 1, 11));
-            put(v, "bad_fov", m3::perspective(180, 1, 1, 10));
-            put(v, "bad_near", m3::perspective(60, 1, 0, 10));
-            put(v, "bad_ortho", m3::orthographic(1, 1, -1, 1, 1, 10));
-            put(v, "s0", m3::to_screen({0, 0, 0, 1}, 100, 50));
-            put(v, "s1", m3::to_screen({0.5, 0.5, 0.2, 2}, 100, 50));
-            const Mat4 p = m3::perspective(90, 1, 1, 10);
-            put(v, "chain0", m3::to_screen(p * Vec4{0, 0, -5, 1}, 64, 64));
-            put(v, "chain1", m3::to_screen(p * Vec4{1, 1, -2, 1}, 64, 64));
-            put(v, "chain2", m3::to_screen(m3::orthographic(-2, 2, -2, 2, 1, 10) * Vec4{1, -1, -3, 1}, 64, 64));
+            put(v, "persp", CALL("perspective", m3::perspective(90, 2, 1, 10)));
+            put(v, "persp60", CALL("perspective", m3::perspective(60, 1.5, 0.5, 50)));
+            put(v, "fov1", CALL("perspective", m3::perspective(1, 1, 0.1, 10)));
+            put(v, "fov179", CALL("perspective", m3::perspective(179, 1, 0.1, 10)));
+            put(v, "ortho", CALL("orthographic", m3::orthographic(-2, 2, -1, 1, 1, 11)));
+            put(v, "bad_fov", CALL("perspective", m3::perspective(180, 1, 1, 10)));
+            put(v, "bad_near", CALL("perspective", m3::perspective(60, 1, 0, 10)));
+            put(v, "bad_ortho", CALL("orthographic", m3::orthographic(1, 1, -1, 1, 1, 10)));
+            put(v, "s0", CALL("to_screen", m3::to_screen({0, 0, 0, 1}, 100, 50)));
+            put(v, "s1", CALL("to_screen", m3::to_screen({0.5, 0.5, 0.2, 2}, 100, 50)));
+            const Mat4 p = CALL("perspective", m3::perspective(90, 1, 1, 10));
+            put(v, "chain0", CALL("to_screen", m3::to_screen(mul(p, Vec4{0, 0, -5, 1}), 64, 64)));
+            put(v, "chain1", CALL("to_screen", m3::to_screen(mul(p, Vec4{1, 1, -2, 1}), 64, 64)));
+            put(v, "chain2", CALL("to_screen", m3::to_screen(mul(CALL("orthographic", m3::orthographic(-2, 2, -2, 2, 1, 10)), Vec4{1, -1, -3, 1}), 64, 64)));
             break;
         }
         case Group::kClip: {
             const auto tris = clip_cases();
             for (std::size_t k = 0; k < tris.size(); ++k) {
-                put_polygon(v, "poly" + std::to_string(k), m3::clip_polygon({tris[k][0], tris[k][1], tris[k][2]}));
+                put_polygon(v, "poly" + std::to_string(k), CALL("clip_polygon", m3::clip_polygon({tris[k][0], tris[k][1], tris[k][2]})));
             }
             const auto lines = clip_line_cases();
             for (std::size_t k = 0; k < lines.size(); ++k) {
                 Vec4 a = lines[k][0], b = lines[k][1];
-                v["line" + std::to_string(k) + ".ok"] = m3::clip_line(a, b);
+                v["line" + std::to_string(k) + ".ok"] = CALL("clip_line", m3::clip_line(a, b));
                 put(v, "line" + std::to_string(k) + ".a", a);
                 put(v, "line" + std::to_string(k) + ".b", b);
             }
             break;
         }
         case Group::kCulling:
-            v["cull.cw"] = m3::is_back_facing({10, 10, 0}, {20, 10, 0}, {10, 20, 0});
-            v["cull.ccw"] = m3::is_back_facing({10, 10, 0}, {10, 20, 0}, {20, 10, 0});
-            v["cull.flat"] = m3::is_back_facing({10, 10, 0}, {20, 20, 0}, {30, 30, 0});
+            v["cull.cw"] = CALL("is_back_facing", m3::is_back_facing({10, 10, 0}, {20, 10, 0}, {10, 20, 0}));
+            v["cull.ccw"] = CALL("is_back_facing", m3::is_back_facing({10, 10, 0}, {10, 20, 0}, {20, 10, 0}));
+            v["cull.flat"] = CALL("is_back_facing", m3::is_back_facing({10, 10, 0}, {20, 20, 0}, {30, 30, 0}));
             break;
         case Group::kBezier: {
             const double ts[] = {0, 0.25, 0.5, 0.8, 1};
             for (int k = 0; k < 5; ++k) {
-                put(v, "b" + std::to_string(k), m3::bezier({0, 0, 0}, {1, 2, 0}, {3, 2, 1}, {4, 0, 2}, ts[k]));
+                put(v, "b" + std::to_string(k), CALL("bezier", m3::bezier({0, 0, 0}, {1, 2, 0}, {3, 2, 1}, {4, 0, 2}, ts[k])));
             }
             break;
         }
@@ -163,15 +171,15 @@ void numbers(Group g, Values& v) {
                 {{{0, 0, -3}, {1, 0, -4}, {0, 1, -3.5}}},     // mean -3.5
                 {{{0, 0, -7}, {1, 0, -6}, {0, 1, -8}}},       // mean -7
             };
-            const std::vector<int> order = m3::painter_order(tris);
+            const std::vector<int> order = CALL("painter_order", m3::painter_order(tris));
             v["order.n"] = static_cast<double>(order.size());
             for (std::size_t k = 0; k < order.size() && k < 16; ++k) v["order." + std::to_string(k)] = order[k];
             break;
         }
         case Group::kRotationDrift: {
-            const Mat4 step = m3::rotate({1, 2, 3}, 0.001);
+            const Mat4 step = CALL("rotate", m3::rotate({1, 2, 3}, 0.001));
             Mat4 r = m3::identity();
-            for (int k = 0; k < 10000; ++k) r = step * r;
+            for (int k = 0; k < 10000; ++k) r = mul(step, r);
             put(v, "r", r);
             break;
         }
@@ -184,10 +192,10 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
         const Panel& panel = s.panels[p];
         const Camera& c = panel.camera;
         const double aspect = double(panel.w) / panel.h;
-        const Mat4 view = m3::look_at(c.eye, c.target, c.up);
-        const Mat4 proj = c.ortho ? m3::orthographic(-c.half_height * aspect, c.half_height * aspect, -c.half_height,
-                                                     c.half_height, c.near, c.far)
-                                  : m3::perspective(c.fovy, aspect, c.near, c.far);
+        const Mat4 view = CALL("look_at", m3::look_at(c.eye, c.target, c.up));
+        const Mat4 proj = c.ortho ? CALL("orthographic", m3::orthographic(-c.half_height * aspect, c.half_height * aspect, -c.half_height,
+                                                     c.half_height, c.near, c.far))
+                                  : CALL("perspective", m3::perspective(c.fovy, aspect, c.near, c.far));
         const std::string key = "panel" + std::to_string(p);
         put(out.values, key + ".view", view);
         put(out.values, key + ".proj", proj);
@@ -195,8 +203,9 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
         const m3::Needs needs{s.fill, s.wireframe, s.cull, s.clip, s.painter};
         for (std::size_t i = 0; i < panel.items.size(); ++i) {
             const Item& it = panel.items[i];
-            const Mat4 model = m3::translate(it.position) * m3::rotate(it.axis, it.angle) * m3::scale(it.size);
-            const m3::Stats st = m3::draw_model(sub, to_model(it.mesh), model, view, proj, needs, s.line);
+            const Mat4 model = mul(mul(CALL("translate", m3::translate(it.position)), CALL("rotate", m3::rotate(it.axis, it.angle))),
+                                   CALL("scale", m3::scale(it.size)));
+            const m3::Stats st = cp::traced(*g_out, "draw_model", sub, [&] { return m3::draw_model(sub, to_model(it.mesh), model, view, proj, needs, s.line); });
             total.vertices_transformed += st.vertices_transformed;
             total.triangles_clipped += st.triangles_clipped;
             total.triangles_culled += st.triangles_culled;
@@ -205,11 +214,11 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
             total.lines_drawn += st.lines_drawn;
             // The clipper on this item's triangles, for the judge to check its output alone.
             if (s.clip && s.panels.size() == 1 && it.mesh.triangles.size() <= 2) {
-                const Mat4 mvp = proj * view * model;
+                const Mat4 mvp = mul(mul(proj, view), model);
                 for (std::size_t t = 0; t < it.mesh.triangles.size(); ++t) {
                     std::vector<Vec4> tri;
-                    for (int k : it.mesh.triangles[t]) tri.push_back(mvp * raster::point(it.mesh.positions[k]));
-                    put_polygon(out.values, "clip" + std::to_string(i) + "_" + std::to_string(t), m3::clip_polygon(tri));
+                    for (int k : it.mesh.triangles[t]) tri.push_back(mul(mvp, raster::point(it.mesh.positions[k])));
+                    put_polygon(out.values, "clip" + std::to_string(i) + "_" + std::to_string(t), CALL("clip_polygon", m3::clip_polygon(tri)));
                 }
             }
         }
@@ -231,10 +240,13 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
 cp::Artifacts render(const std::string& id) {
     const Scene& s = scene(id);
     return cp::render_guarded(s.width, s.height, [&](raster::Image& img, cp::Artifacts& out) {
+        g_out = &out;
         for (Group g : s.groups) numbers(g, out.values);
         if (!s.panels.empty()) draw_panels(s, img, out);
     });
 }
+
+#undef CALL
 
 std::vector<raster::Image> animation() {
     const int frames = 36, width = 160, height = 120;
