@@ -494,7 +494,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
     for (const auto& st : kStats) {
         const std::string key = std::string("stats.") + st[0];
         const double mine = get(c.mine, key), ref = get(c.ref, key);
-        c.j.measures[std::string(st[0]) + " (reference " + num(ref) + ")"] = mine;
+        // The report lists the counts that are not zero (for yours or the reference).
+        if (mine != 0 || ref != 0) c.j.measures[std::string(st[0]) + " (reference " + num(ref) + ")"] = mine;
         clipped_any |= (key == "stats.triangles_clipped" || key == "stats.lines_clipped") && ref > 0;
         // After clipping, a fan may hold zero-area triangles whose culling rounding decides:
         // culled and filled counts are exact only for scenes that clip nothing.
