@@ -131,6 +131,13 @@ const char* const kFarWuLesson =
     "One endpoint is at least 1e15 away: computed from it, y = a.y + gradient (x + 0.5 - a.x) "
     "cancels to the wrong row (-1e300 + 1e300 == 0, whatever the 0.5). Compute each column's y from "
     "the endpoint whose y is nearer the image (for a steep line, x)";
+const char* const kFarClipHint =
+    "Put each clipped coordinate exactly on its edge (x = xmin) and interpolate the other one from "
+    "the endpoint nearer the image, with t measured from there (lesson, section 3: Precision).";
+const char* const kFarWuHint =
+    "Compute each column's y from the endpoint whose y is nearer the image (lesson, section 6).";
+const char* const kMajorAxisHint =
+    "Decide steep with |dy| > |dx|: every other line, 45 degrees and zero length included, steps along x.";
 constexpr double kUnresolved = 1e12;
 
 // How far v lies outside [0, size] (0 inside).
@@ -325,8 +332,9 @@ struct Checker {
     const Image& img;
     cp::Judgement& j;
 
-    void add(const std::string& topic, const std::string& message) {
-        j.findings.push_back({topic, message});
+    void add(const std::string& topic, const std::string& message, const std::string& todo = "",
+             const std::string& hint = "") {
+        j.findings.push_back({topic, message, hint, todo});
     }
 
     std::vector<int> claims;  // per pixel: how many lines may draw it (or expect it dark)
@@ -334,6 +342,7 @@ struct Checker {
     struct FarFailure {
         std::string topic, plain;  // the finding if other lines are wrong too
         std::string precision;     // the finding if only far lines are wrong
+        std::string plain_todo, precision_todo, precision_hint;
     };
     std::vector<FarFailure> far_failures;
     std::size_t strays_at = 0;  // where the stray-pixels finding is (or would be)
@@ -382,9 +391,10 @@ struct Checker {
         for (const auto& f : far_failures) {
             if (others_fine) {
                 // First, before the stray pixels the misplaced line also makes.
-                j.findings.insert(j.findings.begin() + std::ptrdiff_t(strays_at++), {"precision", f.precision});
+                j.findings.insert(j.findings.begin() + std::ptrdiff_t(strays_at++),
+                                  {"precision", f.precision, f.precision_hint, f.precision_todo});
             } else {
-                add(f.topic, f.plain);
+                add(f.topic, f.plain, f.plain_todo);
             }
         }
     }
@@ -400,24 +410,27 @@ struct Checker {
             only_endpoints &= (p.x == plan.p0.x && p.y == plan.p0.y) || (p.x == plan.p1.x && p.y == plan.p1.y);
         }
         if (!missing.empty() && only_endpoints) {
-            add("endpoint", plan.name + ": endpoint pixel " + str(missing.front()) + " is not drawn; both endpoints belong to the line");
+            add("endpoint", plan.name + ": endpoint pixel " + str(missing.front()) + " is not drawn; both endpoints belong to the line",
+                "TODOs 3-4");
             return;
         }
         if (!missing.empty() && missing.size() == plan.required.size()) {
-            add("octant", plan.name + ": the line is not drawn at all");
+            add("octant", plan.name + ": the line is not drawn at all", "TODO 3");
             return;
         }
         if (!missing.empty()) {
             add("octant", plan.name + ": " + std::to_string(missing.size()) + " of its " +
                               std::to_string(plan.required.size()) + " certain pixels are missing, e.g. " +
                               str(missing[missing.size() / 2]) +
-                              " (the pixel nearest the ideal line at that step)");
+                              " (the pixel nearest the ideal line at that step)",
+                "TODO 3");
             return;
         }
         for (const auto& [a, b] : plan.ties) {
             if (!lit(img, a) && !lit(img, b)) {
                 add("octant", plan.name + ": the line passes exactly between " + str(a) + " and " +
-                                  str(b) + "; one of them must be drawn");
+                                  str(b) + "; one of them must be drawn",
+                    "TODO 3");
                 return;
             }
         }
@@ -439,9 +452,9 @@ struct Checker {
                 why << plan.name << ": only " << drawn_columns << " of the " << plan.band_columns.size() << columns
                     << " where it crosses the image have a pixel of it (a gap near " << str(*gap) << "). "
                     << (plan.far_both ? kFarBothClipLesson : kFarOneClipLesson);
-                far_failures.push_back({"clipping", message, why.str()});
+                far_failures.push_back({"clipping", message, why.str(), "TODOs 2, 4", "TODO 2", kFarClipHint});
             } else {
-                add("clipping", message);
+                add("clipping", message, "TODOs 2, 4");
             }
             return;
         }
@@ -460,14 +473,15 @@ struct Checker {
             if (!lit(img, p)) continue;
             ++count;
             if (img.at(p.x, p.y) != plan.color) {
-                add("color", plan.name + ": pixel " + str(p) + " has the wrong color");
+                add("color", plan.name + ": pixel " + str(p) + " has the wrong color", "TODO 3");
                 return;
             }
         }
         if (count != plan.steps + 1) {
             add("pixel count", plan.name + ": " + std::to_string(count) + " pixels drawn, expected " +
                                    std::to_string(plan.steps + 1) +
-                                   " (one per step along the longer axis, both endpoints included)");
+                                   " (one per step along the longer axis, both endpoints included)",
+                "TODO 3");
             return;
         }
         // Breadth-first search over the line's lit pixels.
@@ -489,7 +503,8 @@ struct Checker {
         }
         if (!seen.get(plan.p1.x, plan.p1.y)) {
             add("connectivity", plan.name + ": the pixels do not form one 8-connected chain from " +
-                                    str(plan.p0) + " to " + str(plan.p1));
+                                    str(plan.p0) + " to " + str(plan.p1),
+                "TODO 3");
         }
     }
 
@@ -505,13 +520,15 @@ struct Checker {
             if (plan.far) {
                 far_failures.push_back({"wu coverage", plan.name + ": the anti-aliased line is not drawn at all",
                                         plan.name + ": the anti-aliased line is not drawn where it crosses the image. " +
-                                            kFarWuLesson});
+                                            kFarWuLesson,
+                                        "TODO 5", "TODO 5", kFarWuHint});
             } else if (plan.aa_diagonal) {
                 add("wu major axis", plan.name + ": this exact 45-degree anti-aliased line is not drawn at all. "
                                      "With |dx| == |dy| it is neither steep nor shallow if both tests use >; "
-                                     "lines.h makes x the major axis whenever |dx| >= |dy|");
+                                     "lines.h makes x the major axis whenever |dx| >= |dy|",
+                    "TODO 5", kMajorAxisHint);
             } else {
-                add("wu coverage", plan.name + ": the anti-aliased line is not drawn at all");
+                add("wu coverage", plan.name + ": the anti-aliased line is not drawn at all", "TODO 5");
             }
             return;
         }
@@ -525,11 +542,13 @@ struct Checker {
             if (zero_length_center_drawn && !plan.aa_zero_length_center) {
                 msg << "A zero-length line at a pixel center is drawn, so your code steps along y when |dx| == |dy|: "
                        "lines.h makes x the major axis whenever |dx| >= |dy| (also for 45-degree and zero-length lines)";
-                add("wu major axis", msg.str());
+                add("wu major axis", msg.str(), "TODO 5", kMajorAxisHint);
             } else {
                 msg << "With a == b the slope is 0 / 0 = NaN: use slope 0 when b.x == a.x, and keep x as the major "
                        "axis (|dx| >= |dy|)";
-                add("zero length", msg.str());
+                add("zero length", msg.str(), "TODO 5",
+                    "With a == b, use slope 0 (dy / dx would be 0 / 0 = NaN) and keep x as the major axis: "
+                    "the column whose center is a.x is covered like any other.");
             }
             return;
         }
@@ -550,12 +569,12 @@ struct Checker {
                 << ", expected about " << int(std::max({want.r, want.g, want.b})) << " (coverage "
                 << e.coverage << ")";
             if (plan.far) {
-                far_failures.push_back({"wu coverage", msg.str(), msg.str() + ". " + kFarWuLesson});
+                far_failures.push_back({"wu coverage", msg.str(), msg.str() + ". " + kFarWuLesson, "TODO 5", "TODO 5", kFarWuHint});
             } else if (e.coverage < 1.0 && near(got, swapped) && std::abs(e.coverage - 0.5) > 0.05) {
                 msg << ". The weights look swapped: the pixel nearer the line must get 1 - f";
-                add("wu weights", msg.str());
+                add("wu weights", msg.str(), "TODO 5");
             } else {
-                add("wu coverage", msg.str());
+                add("wu coverage", msg.str(), "TODO 5");
             }
             return;
         }
@@ -576,7 +595,7 @@ struct Checker {
                 }
             }
         }
-        if (wrong > 0) add("outcode", std::to_string(wrong) + " pixel center(s) got the wrong outcode; " + first);
+        if (wrong > 0) add("outcode", std::to_string(wrong) + " pixel center(s) got the wrong outcode; " + first, "TODO 1");
     }
 
     void check_clip_values(const cp::Artifacts& art) {
@@ -594,7 +613,8 @@ struct Checker {
                 add("clipping", call + " returned " + (kept ? "true" : "false") +
                                     (want ? ", but the segment crosses the viewport from " + str(want->first) +
                                                 " to " + str(want->second)
-                                          : ", but the segment misses the viewport"));
+                                          : ", but the segment misses the viewport"),
+                    "TODO 2");
                 continue;
             }
             if (!kept) continue;
@@ -605,11 +625,43 @@ struct Checker {
             };
             if (!close(a, want->first) || !close(b, want->second)) {
                 add("clipping", call + " gave " + str(a) + " - " + str(b) + ", expected " + str(want->first) +
-                                    " - " + str(want->second) + " (a stays on a's side)");
+                                    " - " + str(want->second) + " (a stays on a's side)",
+                    "TODO 2");
             }
         }
     }
 };
+
+// The harness's stray-write finding names no function; the trace says which one wrote
+// outside the image, and each has its own usual cause.
+void attribute_stray_writes(const cp::Artifacts& art, cp::Judgement& j) {
+    if (art.stray_writes <= 0 || j.findings.size() != 1) return;
+    long long attributed = 0;
+    std::vector<cp::Finding> named;
+    for (const auto& [name, t] : art.trace) {
+        if (t.stray_writes <= 0) continue;
+        attributed += t.stray_writes;
+        const std::string n = std::to_string(t.stray_writes);
+        if (name == "draw_line_aa") {
+            named.push_back({"clipping",
+                             "draw_line_aa asked to write " + n + " pixel(s) outside the image: where an "
+                             "anti-aliased line leaves the image through the top or bottom (left or right, for "
+                             "a steep line), one or both of a column's two pixels are outside it",
+                             "Test 0 <= row < height (for a steep line, the x against the width) before each "
+                             "blend, and skip a column whose t is out of range before converting it to int.",
+                             "TODO 5"});
+        } else if (name == "draw_line") {
+            named.push_back({"clipping",
+                             "draw_line asked to write " + n + " pixel(s) outside the image: clip the segment "
+                             "to the rectangle of pixel centers (in double) before converting to int, so the "
+                             "loop only walks visible pixels",
+                             "", "TODOs 2, 4"});
+        } else {
+            named.push_back({"clipping", name + " asked to write " + n + " pixel(s) outside the image"});
+        }
+    }
+    if (attributed == art.stray_writes && !named.empty()) j.findings = named;
+}
 
 }  // namespace
 
@@ -619,6 +671,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art) {
     const Image* main = cp::main_image_for_judging(art, s.width, s.height, j, "clipping",
                                                    "clip first, so the work stays proportional to the visible pixels");
     if (main == nullptr) return j;  // the harness reports a missing or mis-sized image
+    attribute_stray_writes(art, j);
     const Image& img = *main;
     Checker check{s, img, j, {}, false, {}};
     std::vector<Plan> plans;
@@ -657,7 +710,8 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art) {
             }
             j.findings.push_back({"symmetry", "drawing every line from b to a changed " + std::to_string(differ) +
                                                   " pixel(s) (see reversed.png): where the line passes exactly "
-                                                  "between two pixels, the choice must not depend on the direction"});
+                                                  "between two pixels, the choice must not depend on the direction",
+                                  "", "TODO 4"});
         }
     }
 
