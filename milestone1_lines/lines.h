@@ -24,10 +24,11 @@
 //    Precision: that band is promised when at least one endpoint lies within 1e12 of the image
 //    along the minor axis (y for a shallow line, x for a steep one), as in (1e300, 40.5) to
 //    (-1e300, 44.5) or (-1e300, -1e300) to (62.5, 16.5). A parameter t measured from 1e300
-//    away cannot resolve a pixel (1e300 + 0.5 == 1e300 in double), so put each clipped
-//    coordinate exactly on its edge (x = xmin, never a.x + t (b.x - a.x)) and interpolate the
-//    other one from the endpoint nearer the image; draw_line_aa likewise computes each
-//    column's y from the endpoint whose y is nearer the image. When both endpoints are
+//    away cannot resolve a pixel (1e300 + 0.5 == 1e300 in double). Advice (the way to meet
+//    the rule): put each clipped coordinate exactly on its edge (x = xmin, never
+//    a.x + t (b.x - a.x)) and interpolate the other one from the endpoint nearer the image;
+//    in draw_line_aa, compute each column's y from the endpoint whose y is nearer the image.
+//    When both endpoints are
 //    farther than that, as in (-1e300, -1e300) to (1e300, 1e300), no double arithmetic can
 //    place the line to the pixel: only safety is tested (no crash, no hang, no write outside
 //    the image, bounded work), not which pixels it lights.
@@ -48,10 +49,10 @@
 //    zero-length line covers the column whose center is exactly a.x, if there is one: at
 //    (20.5, 24.75) pixels (20, 24) and (20, 25) get 0.75 and 0.25, at a pixel center it lights
 //    that pixel, and anywhere else it draws nothing.
-//    Tested: every pixel of the
-//    interior columns, within 3 of 255 levels. The first and last column, and one beyond each,
-//    are judged leniently (only "near the line"), so Wu's textbook endpoint weighting (dimming
-//    the end columns by how much of them the segment covers) is accepted too. A zero-length
+//    Tested: every pixel of the interior columns, within 3 of 255 levels. The first and last
+//    column, and one beyond each, are judged leniently (only "near the line"), so Wu's
+//    textbook endpoint weighting (dimming the end columns by how much of them the segment
+//    covers) is accepted too. A zero-length
 //    line on a column center must light the nearer of its two pixels (how brightly is judged
 //    leniently, as for every end column). At exactly 45 degrees, stepping along y gives the
 //    same interior pixels as stepping along x, so there only the end columns differ, and they
