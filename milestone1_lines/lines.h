@@ -28,10 +28,9 @@
 //    the rule): put each clipped coordinate exactly on its edge (x = xmin, never
 //    a.x + t (b.x - a.x)) and interpolate the other one from the endpoint nearer the image;
 //    in draw_line_aa, compute each column's y from the endpoint whose y is nearer the image.
-//    When both endpoints are
-//    farther than that, as in (-1e300, -1e300) to (1e300, 1e300), no double arithmetic can
-//    place the line to the pixel: only safety is tested (no crash, no hang, no write outside
-//    the image, bounded work), not which pixels it lights.
+//    When both endpoints are farther than that, as in (-1e300, -1e300) to (1e300, 1e300), no
+//    double arithmetic can place the line to the pixel: only safety is tested (no crash, no
+//    hang, no write outside the image, bounded work), not which pixels it lights.
 //
 //  * Bad input. An endpoint that is NaN or infinite draws nothing (no crash, no hang).
 //
