@@ -118,25 +118,39 @@ Artifacts render_timed(const std::function<Artifacts(const std::string&)>& rende
 struct PolicyCount {
     long long strict_diffs = 0;
     long long lenient_diffs = 0;
+    long long small_diffs = 0;  // outside the lenient mask, within strict_channel_diff levels
     int first_x = -1, first_y = -1;  // first strict difference, for the message
+    raster::Image diff;  // expected dimmed; errors bright red, tolerated differences blue
 };
+
+inline constexpr raster::Color kErrorMark{255, 40, 40};
+inline constexpr raster::Color kToleratedMark{70, 150, 255};
 
 PolicyCount count_under_policy(const raster::Image& actual, const raster::Image& expected,
                                const Tolerance& tol) {
     PolicyCount pc;
+    pc.diff = raster::Image(expected.width(), expected.height());
     for (int y = 0; y < expected.height(); ++y) {
         for (int x = 0; x < expected.width(); ++x) {
             const raster::Color a = actual.at(x, y);
             const raster::Color e = expected.at(x, y);
             const int d = std::max({std::abs(a.r - e.r), std::abs(a.g - e.g), std::abs(a.b - e.b)});
-            if (tol.lenient.get(x, y)) {
-                pc.lenient_diffs += d > 0;
+            raster::Color mark{static_cast<std::uint8_t>(e.r / 4), static_cast<std::uint8_t>(e.g / 4),
+                               static_cast<std::uint8_t>(e.b / 4)};
+            if (d > 0 && tol.lenient.get(x, y)) {
+                ++pc.lenient_diffs;
+                mark = kToleratedMark;
             } else if (d > tol.strict_channel_diff) {
                 if (pc.strict_diffs++ == 0) {
                     pc.first_x = x;
                     pc.first_y = y;
                 }
+                mark = kErrorMark;
+            } else if (d > 0) {
+                ++pc.small_diffs;
+                mark = kToleratedMark;
             }
+            pc.diff.set(x, y, mark);
         }
     }
     return pc;
@@ -362,6 +376,7 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
     }
 
     std::ostringstream report;
+    raster::Image policy_diff;  // see count_under_policy
     if (!expected.empty() && main_it != student.images.end()) {
         const raster::Image& actual = main_it->second;
         const raster::ImageMetrics m = raster::compare(actual, expected);
@@ -379,14 +394,32 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
                                              std::to_string(expected.width()) + "x" +
                                              std::to_string(expected.height())});
         } else {
-            const PolicyCount pc = count_under_policy(actual, expected, judgement.tolerance);
+            PolicyCount pc = count_under_policy(actual, expected, judgement.tolerance);
+            policy_diff = std::move(pc.diff);
+            const Tolerance& tol = judgement.tolerance;
+            rec.tolerated = pc.lenient_diffs + pc.small_diffs;
+            if (rec.tolerated > 0) {
+                std::ostringstream t;
+                t << rec.tolerated << " pixel(s) differ where the rule allows it (blue in diff.png): ";
+                if (pc.small_diffs > 0) {
+                    t << pc.small_diffs << " by at most " << tol.strict_channel_diff
+                      << " level(s) (rounding and FMA differences)";
+                }
+                if (pc.lenient_diffs > 0) {
+                    t << (pc.small_diffs > 0 ? "; " : "") << pc.lenient_diffs << " of at most "
+                      << tol.max_lenient_diffs << " in the ambiguous band"
+                      << (tol.why.empty() ? std::string() : ", because " + tol.why);
+                }
+                rec.tolerated_why = t.str();
+                report << "  tolerated: " << rec.tolerated_why << "\n";
+            }
             if (pc.strict_diffs > 0) {
                 findings.push_back(
                     {"image", std::to_string(pc.strict_diffs) +
                                   " pixel(s) differ from the expected image where every correct "
                                   "implementation agrees; the first is (" +
                                   std::to_string(pc.first_x) + ", " + std::to_string(pc.first_y) +
-                                  "). Red pixels in diff.png show them all."});
+                                  "). Bright red pixels in diff.png show them all."});
             }
             if (pc.lenient_diffs > judgement.tolerance.max_lenient_diffs) {
                 findings.push_back(
@@ -416,25 +449,34 @@ void run_checkpoint(const Suite& suite, const std::string& id) {
     for (const auto& [name, v] : judgement.measures) std::cout << "  " << name << ": " << v << "\n";
     std::cout << "  render time: yours " << std::fixed << std::setprecision(3) << rec.student_ms
               << " ms, reference " << rec.reference_ms << " ms\n";
-    if (!findings.empty()) {
+    // Every checkpoint keeps its pictures (the HTML report shows passing ones too); the paths
+    // are printed only for a failure.
+    const bool failing = !findings.empty();
+    {
         const fs::path out = fs::path(env_or("RASTER_OUTPUT_DIR", "checkpoint_output")) / id;
         fs::create_directories(out);
-        std::cout << "  pictures:\n";
+        if (failing) std::cout << "  pictures:\n";
         for (const auto& [name, img] : student.images) {
             const fs::path p = out / ((name == "main" ? std::string("actual") : name) + ".png");
             raster::write_png(p.string(), img);
-            std::cout << "    " << fs::absolute(p).string() << "\n";
+            if (failing) std::cout << "    " << fs::absolute(p).string() << "\n";
         }
         if (!expected.empty()) {
             raster::write_png((out / "expected.png").string(), expected);
-            std::cout << "    " << fs::absolute(out / "expected.png").string() << "\n";
+            if (failing) std::cout << "    " << fs::absolute(out / "expected.png").string() << "\n";
             if (main_it != student.images.end()) {
-                raster::write_png((out / "diff.png").string(), raster::diff_image(main_it->second, expected));
-                std::cout << "    " << fs::absolute(out / "diff.png").string()
-                          << "  (red: differs from expected)\n";
+                raster::write_png((out / "diff.png").string(), policy_diff.empty()
+                                                                 ? raster::diff_image(main_it->second, expected)
+                                                                 : policy_diff);
+                if (failing) {
+                    std::cout << "    " << fs::absolute(out / "diff.png").string()
+                              << "  (red: wrong; blue: differs, but allowed)\n";
+                }
             }
         }
         rec.output_dir = fs::absolute(out).string();
+    }
+    if (failing) {
         std::cout << "  what is wrong:\n";
         const std::size_t shown = std::min<std::size_t>(findings.size(), 8);
         for (std::size_t i = 0; i < shown; ++i) {

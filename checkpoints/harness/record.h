@@ -23,6 +23,8 @@ struct Record {
     std::map<std::string, double> measures;  // see Judgement::measures
     std::vector<std::string> findings;       // "[topic] message", as printed
     std::string hint;
+    long long tolerated = 0;    // pixels that differ from the expected image where the rule allows it
+    std::string tolerated_why;  // how many of which kind, and why that is fair
     std::string diagnosis;  // "your picture matches what happens ..." (see diagnosis.h), or empty
     std::string todos;  // the TODOs the scene needs, e.g. "1-4, 6" (see cp::needed_todos)
 };

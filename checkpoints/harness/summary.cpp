@@ -65,7 +65,9 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
             "<style>body{font-family:sans-serif;background:#1e1e1e;color:#ddd;margin:2em}"
             "a{color:#8cf}table{border-collapse:collapse}td,th{padding:4px 10px;border-bottom:1px solid #444;text-align:left}"
             ".pass{color:#6c6}.fail{color:#f66}.crashed{color:#fa0}"
-            "img{image-rendering:pixelated;width:192px;border:1px solid #555;margin-right:6px}</style>\n"
+            "figure{display:inline-block;margin:0 10px 10px 0;max-width:320px;vertical-align:top}"
+            "figcaption{font-size:85%;color:#aaa}"
+            "img{image-rendering:pixelated;image-rendering:crisp-edges;width:320px;border:1px solid #555}</style>\n"
             "<h1>Checkpoints</h1>\n<table><tr><th>checkpoint<th>result<th>pixels differ<th>mean error"
             "<th>your ms<th>reference ms<th>needs TODOs<th>concepts</tr>\n";
     for (const cp::Record& r : records) {
@@ -91,7 +93,6 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
     }
     if (any_measure) html << "</table>\n";
     for (const cp::Record& r : records) {
-        if (r.status == "pass") continue;
         html << "<h2 id=\"" << html_escape(r.id) << "\">" << html_escape(r.id) << ": " << html_escape(r.title)
              << "</h2>\n<p class=" << r.status << ">" << r.status << " " << html_escape(r.concepts) << "</p>\n";
         if (!r.todos.empty()) html << "<p>needs TODOs " << html_escape(r.todos) << "</p>\n";
@@ -102,21 +103,56 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         }
         if (!r.hint.empty()) html << "<p><b>hint:</b> " << html_escape(r.hint) << "</p>\n";
         if (!r.diagnosis.empty()) html << "<p><b>known bug:</b> " << html_escape(r.diagnosis) << "</p>\n";
+        if (r.tolerated > 0) html << "<p><b>tolerated:</b> " << html_escape(r.tolerated_why) << "</p>\n";
         if (r.output_dir.empty()) {
             html << "<p>No pictures: the checkpoint crashed or ran out of time. Run it alone to see why.</p>\n";
             continue;
         }
-        html << "<p>";
-        for (const char* name : {"actual", "expected", "diff", "reversed", "other_winding", "count", "stopped"}) {
-            const std::filesystem::path p = std::filesystem::path(r.output_dir) / (std::string(name) + ".png");
-            if (std::filesystem::exists(p)) {
-                html << "<figure style=\"display:inline-block;margin:0 8px 0 0\"><img src=\"" << html_escape(p.string())
-                     << "\"><figcaption>" << name << "</figcaption></figure>";
+        // actual, expected and diff first, then every other picture the scene made.
+        std::vector<std::string> names = {"actual", "expected", "diff"};
+        std::vector<std::string> others;
+        std::error_code ec;
+        for (const auto& entry : std::filesystem::directory_iterator(r.output_dir, ec)) {
+            const std::string stem = entry.path().stem().string();
+            if (entry.path().extension() == ".png" && std::find(names.begin(), names.end(), stem) == names.end()) {
+                others.push_back(stem);
             }
+        }
+        std::sort(others.begin(), others.end());
+        names.insert(names.end(), others.begin(), others.end());
+        html << "<p>";
+        for (const std::string& name : names) {
+            const std::filesystem::path p = std::filesystem::path(r.output_dir) / (name + ".png");
+            if (!std::filesystem::exists(p)) continue;
+            const std::string caption =
+                name == "diff" ? "diff: red = wrong, blue = differs but allowed, dimmed = as expected" : name;
+            html << "<figure><a href=\"" << html_escape(p.string()) << "\"><img alt=\"" << html_escape(r.id + " " + name)
+                 << "\" src=\"" << html_escape(p.string()) << "\"></a><figcaption>" << html_escape(caption)
+                 << "</figcaption></figure>";
         }
         html << "</p>\n";
     }
     html << cp::diagnosis_footer_html(records);
+}
+
+// One checkpoint's report as its process printed it: from "checkpoint <id>: " to its
+// "VERDICT <id> " line (or, for a run that never got there, to where CTest's next line starts).
+std::string report_block(const std::filesystem::path& log_path, const std::string& id) {
+    std::ifstream log(log_path);
+    std::string line, block;
+    bool inside = false;
+    int lines = 0;
+    while (std::getline(log, line)) {
+        if (!inside) {
+            inside = line.rfind("checkpoint " + id + ": ", 0) == 0;
+            if (!inside) continue;
+        } else if (line.find("Test #") != std::string::npos || line.find(" Start ") != std::string::npos) {
+            break;
+        }
+        block += line + "\n";
+        if (line.rfind("VERDICT " + id + " ", 0) == 0 || ++lines > 120) break;
+    }
+    return block;
 }
 
 }  // namespace
@@ -139,8 +175,12 @@ int main(int argc, char** argv) {
         std::filesystem::remove_all(dir / "checkpoint_results");
         std::filesystem::remove_all(dir / "checkpoint_output");
     }
+    // CTest's own output (every checkpoint's full report) goes to a log file; the terminal gets
+    // the first failing checkpoint in full and one line for each of the others (the table).
+    const std::filesystem::path log_path = build / "check_log.txt";
     const std::string command = std::string("\"") + argv[1] + "\" --test-dir \"" + build.string() + "\" -L '" +
-                                argv[3] + "' --output-on-failure";
+                                argv[3] + "' --output-on-failure --parallel 2 > \"" + log_path.string() + "\" 2>&1";
+    std::cout << "Running the checkpoints (full output: " << log_path.string() << ") ..." << std::endl;
     const int ctest_status = std::system(command.c_str());
 
     std::vector<cp::Record> records;
@@ -153,6 +193,15 @@ int main(int argc, char** argv) {
     const std::string json_path = (build / "check_results.json").string();
 
     int passed = 0, failed = 0, crashed = 0;
+
+    for (const cp::Record& r : records) {
+        if (r.status == "pass") continue;
+        const std::string block = report_block(log_path, r.id);
+        if (!block.empty()) {
+            std::cout << "\nThe first checkpoint to fix, in full (the others are one line each below):\n\n" << block;
+        }
+        break;
+    }
 
     std::cout << "\n"
               << std::left << std::setw(28) << "checkpoint" << std::setw(8) << "result"

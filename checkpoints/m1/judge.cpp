@@ -345,7 +345,7 @@ struct Checker {
         std::string plain_todo, precision_todo, precision_hint;
     };
     std::vector<FarFailure> far_failures;
-    std::size_t strays_at = 0;  // where the stray-pixels finding is (or would be)
+    std::size_t strays_at = 0;  // where the off-the-line finding is (or would be)
 
     int& claim(Pix p) { return claims[std::size_t(p.y) * img.width() + p.x]; }
 
@@ -374,7 +374,7 @@ struct Checker {
         }
         strays_at = j.findings.size();
         if (strays > 0) {
-            add("stray pixels",
+            add("off the line",
                 std::to_string(strays) + " pixel(s) are drawn where no line passes within half a "
                 "pixel of their center, e.g. " + first);
         }
@@ -390,7 +390,7 @@ struct Checker {
         const bool others_fine = j.findings.size() == before;
         for (const auto& f : far_failures) {
             if (others_fine) {
-                // First, before the stray pixels the misplaced line also makes.
+                // First, before the off-the-line pixels the misplaced line also makes.
                 j.findings.insert(j.findings.begin() + std::ptrdiff_t(strays_at++),
                                   {"precision", f.precision, f.precision_hint, f.precision_todo});
             } else {
