@@ -6,23 +6,45 @@ set -euo pipefail
 
 packages=(cmake make g++ pkg-config catch2 libstb-dev bubblewrap procps libtinyobjloader-dev
           libgif-dev libglm-dev nlohmann-json3-dev "$@")
+# Optional: used by tests that look at pages (headless Chromium); installed where the
+# distribution has them as a real package, and the tests that need them skip otherwise.
+optional=(chromium)
+
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
+has_candidate() { apt-cache policy "$1" 2>/dev/null | grep -q 'Candidate: [0-9]'; }
+
 missing=()
 for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  installed "$p" || missing+=("$p")
 done
-if [ ${#missing[@]} -eq 0 ]; then
+missing_optional=()
+for p in "${optional[@]}"; do
+  installed "$p" || missing_optional+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ] && [ ${#missing_optional[@]} -eq 0 ]; then
   exit 0
 fi
 
-echo "Installing: ${missing[*]}"
 if [ "$(id -u)" -eq 0 ]; then
   sudo=()
 elif command -v sudo >/dev/null 2>&1; then
   sudo=(sudo)
+elif [ ${#missing[@]} -eq 0 ]; then
+  exit 0  # only optional packages are missing, and nothing can install them
 else
   echo "error: need root or sudo to install: ${missing[*]}" >&2
   exit 1
 fi
 export DEBIAN_FRONTEND=noninteractive
-"${sudo[@]}" apt-get update -qq
-"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "Installing: ${missing[*]}"
+  "${sudo[@]}" apt-get update -qq
+  "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+for p in "${missing_optional[@]}"; do
+  if has_candidate "$p"; then
+    echo "Installing (optional): $p"
+    "${sudo[@]}" apt-get install -y -qq --no-install-recommends "$p" >/dev/null ||
+      echo "note: $p could not be installed; the tests that need it will be skipped"
+  fi
+done

@@ -133,6 +133,11 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         html << "</p>\n";
     }
     html << cp::diagnosis_footer_html(records);
+    // Marks the page once every picture has loaded: data-broken counts the ones that did not
+    // (the project's test reads it through headless Chromium).
+    html << "<script>addEventListener('load',()=>{document.body.dataset.broken="
+            "[...document.images].filter(i=>!i.naturalWidth).length;"
+            "document.body.dataset.pictures=document.images.length;});</script>\n";
 }
 
 // One checkpoint's report as its process printed it: from "checkpoint <id>: " to its
