@@ -10,6 +10,8 @@
 //                                 exact area, and render time, for 1, 4 and 16 samples. --update
 //                                 rewrites the table between the aa-table markers in FILE (the
 //                                 lesson); --check fails if the errors there are not current.
+//   reference_tool todo-table <m> [--update FILE | --check FILE]
+//                                 the table of which TODOs each checkpoint of milestone <m> needs
 //   reference_tool m3-table [...]  likewise, milestone 3's error-against-run-time tables (inverses,
 //                                 rotation drift, a far-away model in float and double)
 //
@@ -32,6 +34,9 @@
 #include "m3/render.h"
 #include "m3/scenes.h"
 #include "m3/tables.h"
+#include "m1/functions.h"
+#include "m2/functions.h"
+#include "m3/functions.h"
 #include "raster/compare.h"
 #include "raster/gif.h"
 #include "raster/io.h"
@@ -172,6 +177,24 @@ int marked_table(const std::string& name, const std::string& table, const std::v
     return 0;
 }
 
+// A milestone's checkpoints with the TODOs each needs: the TODOs of every function the
+// reference calls on the scene (and of the functions those use), as `make check` prints them.
+std::string todo_table_text(const std::string& milestone) {
+    cp::Suite suite;
+    if (milestone == "m1") suite.functions = m1cp::functions();
+    if (milestone == "m2") suite.functions = m2cp::functions();
+    if (milestone == "m3") suite.functions = m3cp::functions();
+    if (suite.functions.empty()) throw std::runtime_error("no milestone named " + milestone);
+    std::ostringstream out;
+    out << "| needs TODOs | checkpoint | what it checks |\n|---|---|---|\n";
+    for (const Entry& e : all_scenes()) {
+        if (e.milestone != milestone) continue;
+        out << "| " << cp::todo_list(cp::needed_todos(suite, e.render(e.id))) << " | `" << e.id << "` | " << e.title
+            << " |\n";
+    }
+    return out.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -183,10 +206,17 @@ int main(int argc, char** argv) {
         const bool table_args = args.size() == 1 || (args.size() == 3 && (args[1] == "--update" || args[1] == "--check"));
         if (!args.empty() && args[0] == "aa-table" && table_args) return marked_table("aa-table", aa_table_text(), args);
         if (!args.empty() && args[0] == "m3-table" && table_args) return marked_table("m3-table", m3cp::error_time_tables(), args);
+        if (args.size() >= 2 && args[0] == "todo-table" &&
+            (args.size() == 2 || (args.size() == 4 && (args[2] == "--update" || args[2] == "--check")))) {
+            std::vector<std::string> rest = {args[0]};
+            rest.insert(rest.end(), args.begin() + 2, args.end());
+            return marked_table("todo-table", todo_table_text(args[1]), rest);
+        }
     } catch (const std::exception& e) {
         std::cerr << "reference_tool: " << e.what() << "\n";
         return 1;
     }
-    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table|m3-table [--update|--check FILE]\n";
+    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table|m3-table [--update|--check FILE]\n"
+                 "       reference_tool todo-table m1|m2|m3 [--update|--check FILE]\n";
     return 2;
 }
