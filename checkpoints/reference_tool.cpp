@@ -60,7 +60,17 @@ std::vector<Entry> all_scenes() {
     return out;
 }
 
+// Milestone 3's animation as its lesson shows it (the demo's spinning cube and soccer ball on
+// a Bezier camera path): written beside the lesson by `make expected`, checked by verify.
+fs::path lesson_animation_path() {
+    return fs::path(cp::expected_png_path("m1", "x")).parent_path().parent_path().parent_path().parent_path() /
+           "milestone3_transforms" / "animation.gif";
+}
+constexpr int kAnimationDelay = 6;  // centiseconds per frame
+
 int write_expected() {
+    raster::write_gif(lesson_animation_path().string(), m3cp::reference::animation(), kAnimationDelay);
+    std::cout << "wrote " << lesson_animation_path().string() << "\n";
     int written = 0;
     for (const Entry& e : all_scenes()) {
         const std::string path = cp::expected_png_path(e.milestone, e.id);
@@ -102,6 +112,23 @@ int verify() {
             }
         }
     }
+    // The lesson's animation: same frames as a fresh render, up to the palette's rounding.
+    try {
+        const raster::GifInfo gif = raster::read_gif(lesson_animation_path().string());
+        const std::vector<raster::Image> frames = m3cp::reference::animation();
+        bool same = gif.frames.size() == frames.size();
+        for (std::size_t i = 0; same && i < frames.size(); ++i) {
+            const raster::ImageMetrics m = raster::compare(gif.frames[i], frames[i]);
+            same = m.same_size && m.mean_abs_error < 2.0;
+        }
+        if (!same) {
+            std::cout << "MISMATCH " << lesson_animation_path().string() << ": not the reference's animation\n";
+            ++bad;
+        }
+    } catch (const std::exception& ex) {
+        std::cout << "MISSING " << lesson_animation_path().string() << ": " << ex.what() << "\n";
+        ++bad;
+    }
     if (bad > 0) {
         std::cout << bad << " problem(s); if the reference changed on purpose, run `make expected`\n";
         return 1;
@@ -117,7 +144,7 @@ int gallery(const std::string& dir) {
     }
     const int shown = cp::showcase(items, dir, "Reference gallery: every milestone's demo scenes");
     // Milestone 3's animation (the demo's spinning cube and soccer ball on a Bezier camera path).
-    raster::write_gif((fs::path(dir) / "m3_animation.gif").string(), m3cp::reference::animation(), 6);
+    raster::write_gif((fs::path(dir) / "m3_animation.gif").string(), m3cp::reference::animation(), kAnimationDelay);
     std::cout << "wrote " << (fs::path(dir) / "m3_animation.gif").string() << "\n";
     return shown;
 }
