@@ -4,8 +4,7 @@
 //
 //   bug_tool update <m> <repo-root> <lesson.md> <work-dir> <skeleton-program>
 //                   (<file.bug> <checkpoint-program>)...
-//       Runs the skeleton's and each bug's checkpoint program (RASTER_CHECKPOINT_MODE=render,
-//       then judge) on every scene, and rewrites checkpoints/bug_pictures/<m>/ (the index
+//       Runs the skeleton's and each bug's checkpoint program on every scene, and rewrites checkpoints/bug_pictures/<m>/ (the index
 //       bugs.txt, the skeleton's pictures, the pictures of the checkpoints each bug fails where
 //       its picture differs from the expected image and from the skeleton's, and the gallery
 //       images) and the troubleshooting section of the lesson.
@@ -154,29 +153,37 @@ struct BugRun {
     fs::path artifacts;
 };
 
-// Runs one bug's checkpoint program, render half then judge half, with its own folders. A
-// checkpoint that crashes the render takes the rest with it, so missing ones are rendered
-// again one by one; a checkpoint that still has no artifacts is judged "crashed".
+// Runs one bug's checkpoint program on every checkpoint, with its own folders. A checkpoint
+// that crashes the program takes the rest with it, so checkpoints without a verdict are run
+// again one by one; one that still has none keeps the record "crashed".
 BugRun run_bug(const BugSource& bug, const fs::path& work) {
     const fs::path dir = work / bug.name;
     fs::remove_all(dir);
     fs::create_directories(dir);
     BugRun r;
     r.ids = checkpoint_ids(bug.program, dir);
-    r.artifacts = dir / "artifacts";
-    const std::string exe = shell_quote(bug.program.string());
-    const std::string render = "cd " + shell_quote(dir.string()) +
-                               " && RASTER_WATCHDOG_SECONDS=1 RASTER_CHECKPOINT_MODE=render RASTER_ARTIFACTS_DIR=" +
-                               shell_quote(r.artifacts.string()) +
-                               " timeout 60 " + exe;
-    run(render + " > render.log 2>&1");
+    r.artifacts = dir / "output";  // <id>/actual.png: the main image as drawn
+    const fs::path results = dir / "results";
+    const std::string run_all = "cd " + shell_quote(dir.string()) +
+                                " && RASTER_WATCHDOG_SECONDS=1 RASTER_RESULTS_DIR=" + shell_quote(results.string()) +
+                                " RASTER_OUTPUT_DIR=" + shell_quote(r.artifacts.string()) + " timeout 120 " +
+                                shell_quote(bug.program.string());
+    run(run_all + " > run.log 2>&1");
+    auto verdicts = [&] {
+        std::map<std::string, cp::Record> by_id;
+        for (cp::Record& rec : cp::read_records(results.string())) by_id[rec.id] = std::move(rec);
+        return by_id;
+    };
+    r.records = verdicts();
+    bool again = false;
     for (const std::string& id : r.ids) {
-        if (!fs::exists(r.artifacts / id / "values.txt")) run(render + " " + shell_quote(id) + " >> render.log 2>&1");
+        const auto it = r.records.find(id);
+        if (it == r.records.end() || it->second.status == "crashed") {
+            run(run_all + " " + shell_quote(id) + " >> run.log 2>&1");
+            again = true;
+        }
     }
-    run("cd " + shell_quote(dir.string()) + " && RASTER_CHECKPOINT_MODE=judge RASTER_ARTIFACTS_DIR=" +
-        shell_quote(r.artifacts.string()) + " RASTER_RESULTS_DIR=" + shell_quote((dir / "results").string()) +
-        " RASTER_OUTPUT_DIR=" + shell_quote((dir / "output").string()) + " timeout 120 " + exe + " > judge.log 2>&1");
-    for (cp::Record& rec : cp::read_records((dir / "results").string())) r.records[rec.id] = std::move(rec);
+    if (again) r.records = verdicts();
     return r;
 }
 
@@ -226,7 +233,7 @@ Built build_library(const std::string& m, const fs::path& root, const fs::path& 
         untouched.program = skeleton;
         const BugRun run = run_bug(untouched, work);
         for (const std::string& id : run.ids) {
-            const fs::path main = run.artifacts / id / "main.png";
+            const fs::path main = run.artifacts / id / "actual.png";
             if (!fs::exists(main)) continue;
             const raster::Image img = raster::read_png(main.string());
             const raster::Image expected = expected_image(b, id);
@@ -256,7 +263,7 @@ Built build_library(const std::string& m, const fs::path& root, const fs::path& 
             const auto rec = run.records.find(id);
             if (rec == run.records.end() || rec->second.status == "pass") continue;
             k.fails.push_back(id);
-            const fs::path main = run.artifacts / id / "main.png";
+            const fs::path main = run.artifacts / id / "actual.png";
             if (rec->second.status != "fail" || !fs::exists(main)) continue;
             const raster::Image img = raster::read_png(main.string());
             const raster::Image expected = expected_image(b, id);

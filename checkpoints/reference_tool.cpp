@@ -156,7 +156,7 @@ std::string aa_table_text() {
     for (const char* id : {"m2.aa_1", "m2.aa_4", "m2.aa_16"}) {
         cp::Artifacts a;
         const double seconds = cp::time_best_of([&] { a = m2cp::reference::render(id); });
-        const cp::Judgement j = m2cp::judge(id, a);
+        const cp::Judgement j = m2cp::judge(id, a, a, raster::Image());
         const auto error = j.measures.begin();
         out << "| " << std::string(id).substr(6) << " | " << std::fixed << std::setprecision(4)
             << (error != j.measures.end() ? error->second : -1) << " | " << std::setprecision(3) << seconds * 1e3

@@ -6,13 +6,15 @@
 //  * the JUDGE half decides the verdict from the Artifacts, the scene's trusted description
 //    and the expected PNG alone.
 //
-// `make check` runs both halves in one process, so a breakpoint in a student's function is
-// hit straight from the checkpoint. For grading, RASTER_CHECKPOINT_MODE=render writes the
-// artifacts to RASTER_ARTIFACTS_DIR and stops, and RASTER_CHECKPOINT_MODE=judge reads them
-// back without running any student code: the grader runs the first in a sandbox and the
-// second in a trusted process, so no verdict depends on code a student wrote.
+// `make check` runs both halves in one process (harness/checkpoint.cpp), so a breakpoint in a
+// student's function is hit straight from the checkpoint. The grader runs them apart: a
+// render program (harness/render_main.cpp: the student's code, the render half and the render
+// side of this harness, nothing else) in a sandbox, one process per checkpoint, and the judge
+// (verdict.h) in a trusted process that reads the artifacts as hostile input. Both use the same
+// judge step, so no verdict ever depends on code a student wrote.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -125,7 +127,16 @@ struct Suite {
     std::function<std::string(const std::string& id)> hint;  // what a failure usually means
     std::function<Artifacts(const std::string& id)> render_student;    // code under test
     std::function<Artifacts(const std::string& id)> render_reference;  // for timing only
-    std::function<Judgement(const std::string& id, const Artifacts&)> judge;
+    // The judge: a pure function of the scene (by id, under the current variant), the student's
+    // artifacts, the reference's artifacts on the same scene and the expected image. It runs no
+    // code under test and reads no file.
+    std::function<Judgement(const std::string& id, const Artifacts& student, const Artifacts& reference,
+                            const raster::Image& expected)>
+        judge;
+    // Scene variants for grading: use_variant(seed) replaces every scene of the milestone by a
+    // variant derived from (seed, scene id); seed 0 restores the public scenes. Null: the
+    // milestone has no variants. See RASTER_SCENE_SEED.
+    std::function<void(std::uint64_t seed)> use_variant;
     std::vector<StudentFunction> functions;    // the milestone's TODO table (see traced())
     std::map<std::string, TopicAdvice> topics;  // per-finding advice, by topic
 };
@@ -224,8 +235,9 @@ const Scene& find_scene(const std::vector<Scene>& all, const std::string& id) {
 template <typename Scene>
 Suite make_suite(std::string milestone, const std::vector<Scene>& (*scenes)(),
                  Artifacts (*render_student)(const std::string&), Artifacts (*render_reference)(const std::string&),
-                 Judgement (*judge)(const std::string&, const Artifacts&),
-                 std::vector<StudentFunction> functions = {}, std::map<std::string, TopicAdvice> topics = {}) {
+                 Judgement (*judge)(const std::string&, const Artifacts&, const Artifacts&, const raster::Image&),
+                 std::vector<StudentFunction> functions = {}, std::map<std::string, TopicAdvice> topics = {},
+                 void (*use_variant)(std::uint64_t) = nullptr) {
     Suite s;
     s.milestone = std::move(milestone);
     for (const Scene& scene : scenes()) s.ids.push_back(scene.id);
@@ -236,8 +248,34 @@ Suite make_suite(std::string milestone, const std::vector<Scene>& (*scenes)(),
     s.judge = judge;
     s.functions = std::move(functions);
     s.topics = std::move(topics);
+    if (use_variant) s.use_variant = use_variant;
     return s;
 }
+
+// ---- artifacts on disk: a render program's output, read back by the trusted judge ----
+// Writes `a` into `dir`: one PNG per image (<name>.png) and values.txt (numbers, trace,
+// stopped call).
+void save_artifacts(const std::string& dir, const Artifacts& a);
+
+// What a judge accepts from a render program: these image names at these sizes, each file at
+// most max_file_bytes.
+struct ArtifactRules {
+    std::map<std::string, std::pair<int, int>> images;  // name -> (width, height)
+    std::size_t max_file_bytes = 16u << 20;
+};
+struct ArtifactError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+// Reads artifacts written by a render program, treating everything in `dir` as hostile: only
+// the file names the rules know are opened, never through a symbolic link, only if they are
+// plain files within the size cap (FIFOs and devices are refused without blocking), and a PNG
+// only if its header has the expected size. Other files are ignored. Throws ArtifactError
+// saying what was wrong; a missing values.txt is an error, a missing image is not (the judge
+// reports it).
+Artifacts read_artifacts(const std::string& dir, const ArtifactRules& rules);
+// The rules for a scene, from the reference's artifacts on it: its image names and sizes, and
+// "stopped" (the watchdog's picture) at the size of any of them.
+ArtifactRules rules_from_reference(const Artifacts& reference);
 
 // The value of environment variable `name`, or `fallback` when it is unset or empty.
 std::string env_or(const char* name, const std::string& fallback);

@@ -11,6 +11,6 @@ namespace {
 
 [[maybe_unused]] const bool registered = cp::register_suite(
     cp::make_suite("m1", m1cp::scenes, m1cp::student::render, m1cp::reference::render, m1cp::judge,
-                   m1cp::functions()));
+                   m1cp::functions(), {}, m1cp::use_variant));
 
 }  // namespace

@@ -5,6 +5,7 @@
 // The demo program and the gallery draw the scenes marked `demo`.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,9 @@ struct Scene {
 };
 
 const std::vector<Scene>& scenes();
+// Grading's scene variants: replaces every scene by a variant derived from (seed, scene id);
+// seed 0 restores the public scenes. scenes() and scene() return the current ones.
+void use_variant(std::uint64_t seed);
 const Scene& scene(const std::string& id);  // throws std::out_of_range for an unknown id
 
 // Colors of the outcode picture, indexed by outcode (0..10; unused codes are black).

@@ -11,6 +11,6 @@ namespace {
 
 [[maybe_unused]] const bool registered = cp::register_suite(
     cp::make_suite("m2", m2cp::scenes, m2cp::student::render, m2cp::reference::render, m2cp::judge,
-                   m2cp::functions()));
+                   m2cp::functions(), {}, m2cp::use_variant));
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Milestone 2 scenes: the trusted description of every triangle checkpoint and demo picture.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,9 @@ struct Scene {
 };
 
 const std::vector<Scene>& scenes();
+// Grading's scene variants: replaces every scene by a variant derived from (seed, scene id);
+// seed 0 restores the public scenes. scenes() and scene() return the current ones.
+void use_variant(std::uint64_t seed);
 const Scene& scene(const std::string& id);
 
 }  // namespace m2cp

@@ -15,6 +15,6 @@ namespace {
 
 [[maybe_unused]] const bool registered = cp::register_suite(
     cp::make_suite("m3", m3cp::scenes, m3cp::student::render, m3cp::reference::render, m3cp::judge,
-                   m3cp::functions(), m3cp::topics()));
+                   m3cp::functions(), m3cp::topics(), m3cp::use_variant));
 
 }  // namespace

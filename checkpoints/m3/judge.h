@@ -6,5 +6,6 @@
 #include "harness/checkpoint.h"
 
 namespace m3cp {
-cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts);
+cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const cp::Artifacts& reference,
+                    const raster::Image& expected);
 }

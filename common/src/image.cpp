@@ -86,7 +86,14 @@ void Image::blend(int x, int y, Color c, double coverage) {
     p[2] = mixed.b;
 }
 
+namespace {
+std::atomic<long long> g_total_stray_writes{0};
+}  // namespace
+
+long long Image::total_stray_writes() { return g_total_stray_writes.load(std::memory_order_relaxed); }
+
 void Image::count_stray_write() {
+    g_total_stray_writes.fetch_add(1, std::memory_order_relaxed);
     if (++stray_writes_ > stray_limit_) {
         throw StrayWriteLimit("more than " + std::to_string(stray_limit_) +
                               " writes outside the image: a loop is running past its end");

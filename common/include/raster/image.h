@@ -80,6 +80,10 @@ public:
     // Another thread may read it while this one draws (the checkpoints' watchdog does).
     long long writes() const { return writes_.load(std::memory_order_relaxed); }
     long long stray_writes() const { return stray_writes_; }
+    // Every stray write of every image in this process since it started. Nothing resets it:
+    // assigning a fresh Image over one that wrote outside (which copies the fresh image's
+    // zero count) does not hide those writes from this total. The checkpoints use it.
+    static long long total_stray_writes();
     // After `limit` stray writes, the next one throws StrayWriteLimit (default: no limit).
     void limit_stray_writes(long long limit) { stray_limit_ = limit; }
 

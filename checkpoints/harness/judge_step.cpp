@@ -1,0 +1,369 @@
+// The judge step (see verdict.h): pure, shared by `make check` and the grader.
+#include "harness/verdict.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+#include "harness/diagnosis.h"
+#include "raster/io.h"
+
+namespace fs = std::filesystem;
+
+namespace cp {
+
+namespace {
+
+// ---- image comparison under a tolerance policy ----
+
+struct PolicyCount {
+    long long strict_diffs = 0;
+    long long lenient_diffs = 0;
+    long long small_diffs = 0;  // outside the lenient mask, within strict_channel_diff levels
+    int first_x = -1, first_y = -1;  // first strict difference, for the message
+    raster::Image diff;  // expected dimmed; errors bright red, tolerated differences blue
+};
+
+inline constexpr raster::Color kErrorMark{255, 40, 40};
+inline constexpr raster::Color kToleratedMark{70, 150, 255};
+
+PolicyCount count_under_policy(const raster::Image& actual, const raster::Image& expected,
+                               const Tolerance& tol) {
+    PolicyCount pc;
+    pc.diff = raster::Image(expected.width(), expected.height());
+    for (int y = 0; y < expected.height(); ++y) {
+        for (int x = 0; x < expected.width(); ++x) {
+            const raster::Color a = actual.at(x, y);
+            const raster::Color e = expected.at(x, y);
+            const int d = std::max({std::abs(a.r - e.r), std::abs(a.g - e.g), std::abs(a.b - e.b)});
+            raster::Color mark{static_cast<std::uint8_t>(e.r / 4), static_cast<std::uint8_t>(e.g / 4),
+                               static_cast<std::uint8_t>(e.b / 4)};
+            if (d > 0 && tol.lenient.get(x, y)) {
+                ++pc.lenient_diffs;
+                mark = kToleratedMark;
+            } else if (d > tol.strict_channel_diff) {
+                if (pc.strict_diffs++ == 0) {
+                    pc.first_x = x;
+                    pc.first_y = y;
+                }
+                mark = kErrorMark;
+            } else if (d > 0) {
+                ++pc.small_diffs;
+                mark = kToleratedMark;
+            }
+            pc.diff.set(x, y, mark);
+        }
+    }
+    return pc;
+}
+
+std::string fmt_metrics(const raster::ImageMetrics& m) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(3) << m.differing_pixels << " pixels differ ("
+      << 100 * m.differing_share << "%), max channel diff " << m.max_channel_diff
+      << ", mean abs error " << m.mean_abs_error << ", PSNR ";
+    if (std::isinf(m.psnr_db)) {
+        s << "inf";
+    } else {
+        s << std::setprecision(1) << m.psnr_db << " dB";
+    }
+    return s.str();
+}
+
+const StudentFunction* find_function(const Suite& suite, const std::string& name) {
+    for (const StudentFunction& f : suite.functions) {
+        if (f.name == name) return &f;
+    }
+    return nullptr;
+}
+
+// "`draw_line` (TODOs 3-4)", or "`draw_line`" when the milestone's table does not name it.
+std::string function_label(const Suite& suite, const std::string& name) {
+    const StudentFunction* f = find_function(suite, name);
+    const std::string todo = f ? todo_label(f->todos) : "";
+    return "`" + name + "`" + (todo.empty() ? "" : " (" + todo + ")");
+}
+
+std::string finding_todo(const Suite& suite, const Finding& f) {
+    if (!f.todo.empty()) return f.todo;
+    const auto it = suite.topics.find(f.topic);
+    return it == suite.topics.end() ? "" : it->second.todo;
+}
+
+std::string finding_hint(const Suite& suite, const Finding& f) {
+    if (!f.hint.empty()) return f.hint;
+    const auto it = suite.topics.find(f.topic);
+    return it == suite.topics.end() ? "" : it->second.hint;
+}
+
+// "[topic] (TODO 5) message": how a finding is printed and recorded.
+std::string finding_line(const Suite& suite, const Finding& f) {
+    const std::string todo = finding_todo(suite, f);
+    const bool named = todo.empty() || f.message.find("(" + todo + ")") != std::string::npos;
+    return "[" + f.topic + "] " + (named ? "" : "(" + todo + ") ") + f.message;
+}
+
+// The finding for a render the watchdog stopped.
+Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
+    std::ostringstream msg;
+    if (s.function.empty()) {
+        msg << "the render did not finish within " << s.seconds
+            << " s, and none of your functions was running: a loop outside them (report this to your teacher)";
+        return {"endless loop", msg.str()};
+    }
+    const StudentFunction* f = find_function(suite, s.function);
+    msg << function_label(suite, s.function) << " was still running after " << s.seconds << " s, in its ";
+    if (s.call <= 1) {
+        msg << "first call on this scene";
+    } else {
+        msg << "call number " << s.call << " on this scene (" << s.call - 1 << " earlier call(s) returned)";
+    }
+    msg << ", having written " << s.writes << " pixel(s) in that call";
+    if (s.stray_writes > 0) msg << " and " << s.stray_writes << " outside the image";
+    msg << ": most likely an endless loop, so the watchdog stopped it";
+    Finding out{f && !f->loop_topic.empty() ? f->loop_topic : "endless loop", msg.str()};
+    out.todo = f ? todo_label(f->todos) : "";
+    out.hint = f ? f->loop_advice : "";
+    return out;
+}
+
+// One finding per function that the reference drew with on this scene and the code under test
+// called without drawing anything: most often a TODO not written yet.
+std::vector<Finding> nothing_drawn_findings(const Suite& suite, const Artifacts& student, const Artifacts& reference) {
+    std::vector<std::string> names;  // the milestone's TODO order first, then any other
+    for (const StudentFunction& f : suite.functions) names.push_back(f.name);
+    for (const auto& [name, t] : reference.trace) {
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    std::vector<Finding> out;
+    for (const std::string& name : names) {
+        const auto ref_it = reference.trace.find(name);
+        if (ref_it == reference.trace.end()) continue;
+        const FunctionTrace& ref = ref_it->second;
+        const auto it = student.trace.find(name);
+        if (ref.writes == 0 || it == student.trace.end() || it->second.calls == 0 || it->second.writes > 0) continue;
+        const StudentFunction* f = find_function(suite, name);
+        std::string msg = function_label(suite, name) + " drew nothing" +
+                          (it->second.stray_writes > 0 ? " inside the image" : "") + " in " +
+                          std::to_string(it->second.calls) + " call(s); the reference draws " +
+                          std::to_string(ref.writes) + " pixel(s) with it on this scene";
+        Finding finding{"nothing drawn", msg};
+        finding.todo = f ? todo_label(f->todos) : "";
+        finding.hint = (finding.todo.empty() ? "this TODO" : finding.todo) + " is not written yet (or `" + name +
+                       "` returns before drawing anything): fill it in, following its section in the lesson";
+        out.push_back(finding);
+    }
+    return out;
+}
+
+
+}  // namespace
+
+std::uint64_t scene_seed_from_env() {
+    const std::string s = env_or("RASTER_SCENE_SEED", "0");
+    char* end = nullptr;
+    const unsigned long long v = std::strtoull(s.c_str(), &end, 10);
+    if (end == s.c_str() || *end != '\0') throw std::invalid_argument("RASTER_SCENE_SEED='" + s + "' is not a number");
+    return v;
+}
+
+Expected expected_image(const Suite& suite, const std::string& id, std::uint64_t seed, const Artifacts& reference) {
+    Expected e;
+    if (seed != 0) {
+        const auto it = reference.images.find("main");
+        if (it != reference.images.end()) {
+            e.image = it->second;
+        } else {
+            e.problem = "the reference drew no main image on this scene variant";
+        }
+        return e;
+    }
+    try {
+        e.image = raster::read_png(expected_png_path(suite.milestone, id));
+    } catch (const raster::ImageIoError& err) {
+        e.problem = std::string(err.what()) + " (maintainers: run `make expected` to regenerate it)";
+    }
+    return e;
+}
+
+Record checkpoint_record(const Suite& suite, const std::string& id, const Artifacts& reference) {
+    Record rec;
+    rec.id = id;
+    rec.milestone = suite.milestone;
+    rec.title = suite.title(id);
+    rec.order = static_cast<int>(std::find(suite.ids.begin(), suite.ids.end(), id) - suite.ids.begin());
+    rec.todos = todo_list(needed_todos(suite, reference));
+    rec.status = "crashed";  // until a verdict replaces it
+    return rec;
+}
+
+Finding unreadable_artifacts_finding(const std::string& why) {
+    return {"artifacts", "the render's output could not be used: " + why,
+            "the render program wrote something other than the pictures and numbers of this scene "
+            "(or nothing at all): did your code end the program, print to a file, or crash?"};
+}
+
+Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifacts& student,
+                         const Artifacts& reference, const Expected& expected_in) {
+    Verdict v;
+    Record& rec = v.record;
+    rec = checkpoint_record(suite, id, reference);
+    if (!rec.todos.empty()) v.needs = " (needs " + todo_label(needed_todos(suite, reference)) + ")";
+    const raster::Image& expected = expected_in.image;
+
+    Judgement judgement;
+    if (student.stopped) {
+        judgement.findings.push_back(stopped_finding(suite, student.stopped_call));
+    } else {
+        judgement = suite.judge(id, student, reference, expected);
+    }
+    std::vector<Finding>& findings = judgement.findings;
+    if (student.values.count(kRunawayKey)) {
+        findings.insert(findings.begin(),
+                        {"runaway loop", "your code was stopped after " + std::to_string(kStrayWriteBudget) +
+                                             " writes outside the image: a loop runs past its end point. "
+                                             "Check the step signs and the loop's stop condition"});
+    }
+    const std::vector<Finding> nothing = nothing_drawn_findings(suite, student, reference);
+    findings.insert(findings.begin(), nothing.begin(), nothing.end());
+    if (!expected_in.problem.empty()) findings.push_back({"setup", expected_in.problem});
+
+    const auto main_it = student.images.find("main");
+    std::ostringstream report;
+    raster::Image policy_diff;  // see count_under_policy
+    if (!expected.empty() && main_it != student.images.end()) {
+        const raster::Image& actual = main_it->second;
+        const raster::ImageMetrics m = raster::compare(actual, expected);
+        rec.student = m;
+        rec.has_metrics = true;
+        report << "  image error (yours vs expected):     " << fmt_metrics(m) << "\n";
+        const auto ref_it = reference.images.find("main");
+        if (ref_it != reference.images.end()) {
+            rec.reference = raster::compare(ref_it->second, expected);
+            report << "  image error (reference vs expected): " << fmt_metrics(rec.reference) << "\n";
+        }
+        if (!m.same_size) {
+            findings.push_back({"image", "the image is " + std::to_string(actual.width()) + "x" +
+                                             std::to_string(actual.height()) + ", expected " +
+                                             std::to_string(expected.width()) + "x" +
+                                             std::to_string(expected.height())});
+        } else {
+            PolicyCount pc = count_under_policy(actual, expected, judgement.tolerance);
+            policy_diff = std::move(pc.diff);
+            const Tolerance& tol = judgement.tolerance;
+            rec.tolerated = pc.lenient_diffs + pc.small_diffs;
+            if (rec.tolerated > 0) {
+                std::ostringstream t;
+                t << rec.tolerated << " pixel(s) differ where the rule allows it (blue in diff.png): ";
+                if (pc.small_diffs > 0) {
+                    t << pc.small_diffs << " by at most " << tol.strict_channel_diff
+                      << " level(s) (rounding and FMA differences)";
+                }
+                if (pc.lenient_diffs > 0) {
+                    t << (pc.small_diffs > 0 ? "; " : "") << pc.lenient_diffs << " of at most "
+                      << tol.max_lenient_diffs << " in the ambiguous band"
+                      << (tol.why.empty() ? std::string() : ", because " + tol.why);
+                }
+                rec.tolerated_why = t.str();
+                report << "  tolerated: " << rec.tolerated_why << "\n";
+            }
+            if (pc.strict_diffs > 0) {
+                findings.push_back(
+                    {"image", std::to_string(pc.strict_diffs) +
+                                  " pixel(s) differ from the expected image where every correct "
+                                  "implementation agrees; the first is (" +
+                                  std::to_string(pc.first_x) + ", " + std::to_string(pc.first_y) +
+                                  "). Bright red pixels in diff.png show them all."});
+            }
+            if (pc.lenient_diffs > tol.max_lenient_diffs) {
+                findings.push_back({"image", std::to_string(pc.lenient_diffs) +
+                                                 " pixels near edges differ from the expected image; up to " +
+                                                 std::to_string(tol.max_lenient_diffs) + " may, because " + tol.why});
+            }
+        }
+    } else if (main_it == student.images.end() && !student.stopped) {
+        findings.push_back({"setup", "the render produced no main image"});
+    }
+    v.image_report = report.str();
+
+    rec.student_ms = student.seconds * 1e3;
+    rec.reference_ms = reference.seconds * 1e3;
+    rec.measures = judgement.measures;
+    rec.status = findings.empty() ? "pass" : "fail";
+    std::vector<std::string> topics;  // each finding's topic once, in order of appearance
+    for (const Finding& f : findings) {
+        if (std::find(topics.begin(), topics.end(), f.topic) == topics.end()) {
+            topics.push_back(f.topic);
+            rec.concepts += (rec.concepts.empty() ? "" : ",") + f.topic;
+        }
+        rec.findings.push_back(finding_line(suite, f));
+    }
+    if (!findings.empty()) {
+        // The hint follows the first finding (the likeliest cause), not the scene: a scene that
+        // fails because a TODO it also needs is empty should say so, not hint at its own topic.
+        const std::string own = finding_hint(suite, findings.front());
+        rec.hint = own.empty() ? suite.hint(id) : own;
+        if (!expected.empty() && main_it != student.images.end()) {
+            rec.diagnosis = diagnosis_for(suite.milestone, id, main_it->second, expected);
+        }
+    }
+
+    // Every checkpoint keeps its pictures (the HTML report shows passing ones too).
+    for (const auto& [name, img] : student.images) v.pictures[name == "main" ? "actual" : name] = img;
+    if (!expected.empty()) {
+        v.pictures["expected"] = expected;
+        if (main_it != student.images.end()) {
+            v.pictures["diff"] = policy_diff.empty() ? raster::diff_image(main_it->second, expected) : policy_diff;
+        }
+    }
+    v.findings = std::move(findings);
+    return v;
+}
+
+void write_pictures(const std::string& dir, Verdict& v) {
+    const fs::path out = dir;
+    fs::create_directories(out);
+    for (const auto& [name, img] : v.pictures) raster::write_png((out / (name + ".png")).string(), img);
+    v.record.output_dir = fs::absolute(out).string();
+}
+
+void print_verdict(std::ostream& out, const Suite& suite, const Verdict& v) {
+    const Record& rec = v.record;
+    out << "checkpoint " << rec.id << ": " << rec.title << v.needs << "\n" << v.image_report;
+    for (const auto& [name, value] : rec.measures) out << "  " << name << ": " << value << "\n";
+    out << "  render time: yours " << std::fixed << std::setprecision(3) << rec.student_ms << " ms, reference "
+        << rec.reference_ms << " ms\n";
+    out.unsetf(std::ios::fixed);
+    const bool failing = !v.findings.empty();
+    if (failing && !rec.output_dir.empty() && !v.pictures.empty()) {
+        out << "  pictures:\n";
+        // The student's own pictures first, then the expected image and the difference.
+        std::vector<std::string> names;
+        for (const auto& [name, img] : v.pictures) {
+            if (name != "expected" && name != "diff") names.push_back(name);
+        }
+        for (const char* name : {"expected", "diff"}) {
+            if (v.pictures.count(name)) names.push_back(name);
+        }
+        for (const std::string& name : names) {
+            out << "    " << (fs::path(rec.output_dir) / (name + ".png")).string()
+                << (name == "diff" ? "  (red: wrong; blue: differs, but allowed)" : "") << "\n";
+        }
+    }
+    if (failing) {
+        out << "  what is wrong:\n";
+        const std::size_t shown = std::min<std::size_t>(v.findings.size(), 8);
+        for (std::size_t i = 0; i < shown; ++i) out << "    " << finding_line(suite, v.findings[i]) << "\n";
+        if (v.findings.size() > shown) out << "    ... and " << v.findings.size() - shown << " more\n";
+        out << "  hint: " << rec.hint << "\n";
+        if (!rec.diagnosis.empty()) out << "  known bug: " << rec.diagnosis << "\n";
+    }
+    // One line that tools (and the project's own tests) can match.
+    out << "VERDICT " << rec.id << " " << (failing ? "FAIL" : "PASS") << " concepts=" << rec.concepts << "\n"
+        << std::flush;
+}
+
+}  // namespace cp
