@@ -1,0 +1,689 @@
+// raster_grade: the trusted half of grading. It links the scenes, the reference and the judges
+// of every milestone, and never a student's code. tools/grading/grade drives it; see the
+// instructor section of README.md.
+//
+//   raster_grade ids <m>
+//       The checkpoint ids of milestone <m>, one per line, from the trusted scene table (the
+//       grader and `make check`'s test discovery use this; no student code runs for it).
+//   raster_grade judge <m> <scene-id> <seed> <artifacts-dir> <out-dir> [--status FILE]
+//                      [--name NAME] [--title TITLE]
+//       Renders the reference on the scene (variant <seed>; 0 = public), reads the render
+//       program's artifacts from <artifacts-dir> as hostile input, judges them with the same
+//       judge step as `make check`, and writes <out-dir>/verdict.json and the pictures.
+//       --status is sandbox-run's status file of the render: a render that crashed, timed out
+//       or exited non-zero fails with that said. --name is the checkpoint's name in the
+//       results (hidden checkpoints have their own); --title replaces the scene's title.
+//   raster_grade rubric-files <rubric.json>
+//       Per milestone: its folder and the files students edit, which the grader takes.
+//   raster_grade plan <rubric.json> <m> <seed> [hidden.json]
+//       The checkpoints to grade (public and hidden) with their scenes, seeds and points.
+//   raster_grade report <grading-dir> <rubric.json> <out-dir> [--name NAME]
+//       From the verdicts under <grading-dir> (<m>/verdicts/<name>/verdict.json, and
+//       <m>/compile.status and compile.log) writes <out-dir>/results.json (Gradescope's
+//       format) and <out-dir>/report.html (self-contained: pictures inline).
+//   raster_grade class <out-dir> <results.json>...
+//       The class view of many gradings: <out-dir>/class.csv (points per milestone and per
+//       checkpoint, a row per submission) and <out-dir>/class.html (which checkpoints the
+//       class fails most, with the concept named).
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/checkpoint.h"
+#include "harness/verdict.h"
+#include "m1/functions.h"
+#include "m1/judge.h"
+#include "m1/render.h"
+#include "m1/scenes.h"
+#include "m2/functions.h"
+#include "m2/judge.h"
+#include "m2/render.h"
+#include "m2/scenes.h"
+#include "m3/functions.h"
+#include "m3/judge.h"
+#include "m3/render.h"
+#include "m3/scenes.h"
+#include "raster/io.h"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// The milestones as the judge sees them: no render_student (no student code is linked here).
+const std::vector<cp::Suite>& suites() {
+    static const std::vector<cp::Suite> all = {
+        cp::make_suite("m1", m1cp::scenes, nullptr, m1cp::reference::render, m1cp::judge, m1cp::functions(), {},
+                       m1cp::use_variant),
+        cp::make_suite("m2", m2cp::scenes, nullptr, m2cp::reference::render, m2cp::judge, m2cp::functions(), {},
+                       m2cp::use_variant),
+        cp::make_suite("m3", m3cp::scenes, nullptr, m3cp::reference::render, m3cp::judge, m3cp::functions(),
+                       m3cp::topics(), m3cp::use_variant),
+    };
+    return all;
+}
+
+const cp::Suite& suite(const std::string& m) {
+    for (const cp::Suite& s : suites()) {
+        if (s.milestone == m) return s;
+    }
+    throw std::invalid_argument("no milestone " + m);
+}
+
+std::string read_text(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// sandbox-run's status file: key=value lines.
+std::map<std::string, std::string> read_status(const fs::path& p) {
+    std::map<std::string, std::string> kv;
+    std::istringstream in(read_text(p));
+    std::string line;
+    while (std::getline(in, line)) {
+        const auto eq = line.find('=');
+        if (eq != std::string::npos) kv[line.substr(0, eq)] = line.substr(eq + 1);
+    }
+    return kv;
+}
+
+std::string signal_name(int sig) {
+    switch (sig) {
+        case 4: return "SIGILL (illegal instruction)";
+        case 6: return "SIGABRT (abort: a failed assertion or an uncaught exception)";
+        case 8: return "SIGFPE (integer division by zero)";
+        case 9: return "SIGKILL (a hard limit: CPU time or memory)";
+        case 11: return "SIGSEGV (segmentation fault: a bad pointer or an index out of range)";
+        case 24: return "SIGXCPU (the CPU-time limit)";
+        case 25: return "SIGXFSZ (the file-size limit)";
+        default: return "signal " + std::to_string(sig);
+    }
+}
+
+// The finding for a render that did not end normally, or none.
+std::optional<cp::Finding> render_status_finding(const std::map<std::string, std::string>& st) {
+    const std::string result = st.count("result") ? st.at("result") : "missing";
+    const int exit = st.count("exit") ? std::atoi(st.at("exit").c_str()) : -1;
+    if (result == "exited" && exit == 0) return std::nullopt;
+    if (result == "timeout") {
+        return cp::Finding{"time limit", "the render did not finish within the time limit and was killed",
+                           "an endless loop that the checkpoint's watchdog could not stop: does a loop of yours "
+                           "depend on input that never changes (NaN, a step of 0)?"};
+    }
+    if (result == "exited" && exit > 128) {
+        return cp::Finding{"crash", "the render program was ended by " + signal_name(exit - 128),
+                           "run this checkpoint with `make check` on your machine, under a debugger or with the "
+                           "sanitizers (cmake -DRASTER_SANITIZE=ON), to see where"};
+    }
+    if (result == "exited") {
+        return cp::Finding{"crash", "the render program exited with status " + std::to_string(exit) +
+                                        " instead of finishing the scene",
+                           "your code must not end the program (exit(), abort(), an uncaught exception)"};
+    }
+    return cp::Finding{"crash", "the render program could not be run (" + result + ")", ""};
+}
+
+json metrics_json(const raster::ImageMetrics& m) {
+    return {{"differing_pixels", m.differing_pixels},
+            {"differing_share", m.differing_share},
+            {"max_channel_diff", m.max_channel_diff},
+            {"mean_abs_error", m.mean_abs_error},
+            {"psnr_db", std::isfinite(m.psnr_db) ? json(m.psnr_db) : json(nullptr)}};
+}
+
+int cmd_ids(const std::string& m) {
+    for (const std::string& id : suite(m).ids) std::cout << id << "\n";
+    return 0;
+}
+
+int cmd_judge(const std::vector<std::string>& args) {
+    if (args.size() < 5) throw std::invalid_argument("judge needs <m> <scene-id> <seed> <artifacts-dir> <out-dir>");
+    const std::string m = args[0], id = args[1];
+    const std::uint64_t seed = std::stoull(args[2]);
+    const fs::path artifacts_dir = args[3], out = args[4];
+    std::string status_file, name = id, title;
+    for (std::size_t i = 5; i + 1 < args.size(); i += 2) {
+        if (args[i] == "--status") status_file = args[i + 1];
+        else if (args[i] == "--name") name = args[i + 1];
+        else if (args[i] == "--title") title = args[i + 1];
+        else throw std::invalid_argument("unknown option " + args[i]);
+    }
+    const cp::Suite& s = suite(m);
+    if (seed != 0) s.use_variant(seed);
+    if (std::find(s.ids.begin(), s.ids.end(), id) == s.ids.end()) throw std::invalid_argument("no checkpoint " + id);
+    fs::remove_all(out);
+    fs::create_directories(out);
+
+    cp::Artifacts reference;
+    const double ref_seconds = cp::time_best_of([&] { reference = s.render_reference(id); });
+    reference.seconds = ref_seconds;
+    const cp::Expected expected = cp::expected_image(s, id, seed, reference);
+
+    // The student's artifacts: only what the scene can produce, as hostile input.
+    std::vector<cp::Finding> early;
+    cp::Artifacts student;
+    std::map<std::string, std::string> status;
+    if (!status_file.empty()) {
+        status = read_status(status_file);
+        if (auto f = render_status_finding(status)) early.push_back(*f);
+    }
+    try {
+        student = cp::read_artifacts(artifacts_dir.string(), cp::rules_from_reference(reference));
+    } catch (const cp::ArtifactError& e) {
+        if (early.empty()) early.push_back(cp::unreadable_artifacts_finding(e.what()));
+        student = cp::Artifacts{};
+    }
+    cp::Verdict v = cp::judge_checkpoint(s, id, student, reference, expected);
+    if (!early.empty()) {
+        // The render itself failed: that is the verdict, whatever its output looks like.
+        v.findings.insert(v.findings.begin(), early.begin(), early.end());
+        std::vector<std::string> lines;
+        for (const cp::Finding& f : early) lines.push_back("[" + f.topic + "] " + f.message);
+        v.record.findings.insert(v.record.findings.begin(), lines.begin(), lines.end());
+        v.record.status = "fail";
+        std::string concepts;
+        for (const cp::Finding& f : early) concepts += (concepts.empty() ? "" : ",") + f.topic;
+        v.record.concepts = concepts + (v.record.concepts.empty() ? "" : "," + v.record.concepts);
+        if (!early.front().hint.empty()) v.record.hint = early.front().hint;
+    }
+    cp::write_pictures(out.string(), v);
+    const cp::Record& r = v.record;
+    std::vector<std::string> concepts;
+    std::istringstream cs(r.concepts);
+    for (std::string c; std::getline(cs, c, ',');) {
+        if (!c.empty()) concepts.push_back(c);
+    }
+    json j = {{"milestone", m},
+              {"name", name},
+              {"scene", id},
+              {"seed", seed},
+              {"title", title.empty() ? r.title : title},
+              {"order", r.order},
+              {"status", r.status},
+              {"concepts", concepts},
+              {"findings", r.findings},
+              {"hint", r.hint},
+              {"diagnosis", r.diagnosis},
+              {"todos", r.todos},
+              {"student_ms", r.student_ms},
+              {"reference_ms", r.reference_ms},
+              {"tolerated", r.tolerated},
+              {"tolerated_why", r.tolerated_why},
+              {"has_metrics", r.has_metrics},
+              {"student", metrics_json(r.student)},
+              {"reference", metrics_json(r.reference)},
+              {"measures", r.measures},
+              {"render", status}};
+    std::vector<std::string> pictures;
+    for (const auto& [pname, img] : v.pictures) pictures.push_back(pname);
+    j["pictures"] = pictures;
+    std::ofstream(out / "verdict.json") << j.dump(1) << "\n";
+    std::cout << "VERDICT " << name << " " << (r.status == "pass" ? "PASS" : "FAIL") << " concepts=" << r.concepts
+              << "\n";
+    return 0;
+}
+
+// ---- the rubric ----
+
+struct Part {
+    std::vector<std::string> topics;
+    double points = 0;
+    std::string what;
+};
+
+struct MilestoneRubric {
+    std::string folder;
+    std::vector<std::string> files;
+    double default_points = 1;
+    std::map<std::string, double> points;
+    std::vector<Part> parts;
+};
+
+std::map<std::string, MilestoneRubric> read_rubric(const fs::path& p) {
+    const json j = json::parse(read_text(p));
+    std::map<std::string, MilestoneRubric> out;
+    for (const auto& [m, jm] : j.at("milestones").items()) {
+        MilestoneRubric r;
+        r.folder = jm.at("folder").get<std::string>();
+        r.files = jm.at("files").get<std::vector<std::string>>();
+        r.default_points = jm.value("default_points", 1.0);
+        if (jm.contains("points")) r.points = jm.at("points").get<std::map<std::string, double>>();
+        if (jm.contains("partial")) {
+            for (const json& jp : jm.at("partial")) {
+                r.parts.push_back({jp.at("topics").get<std::vector<std::string>>(), jp.at("points").get<double>(),
+                                   jp.value("what", std::string())});
+            }
+        }
+        out[m] = r;
+    }
+    return out;
+}
+
+double max_points(const MilestoneRubric& r, const std::string& name, const json& verdict) {
+    if (verdict.contains("points")) return verdict.at("points").get<double>();
+    const auto it = r.points.find(name);
+    return it == r.points.end() ? r.default_points : it->second;
+}
+
+// Points earned: all on a pass; on a failure, when every concept that failed belongs to a
+// partial-credit part (an independent property of the checkpoint), the maximum less those
+// parts' points; otherwise 0. No verdict at all: 0.
+double earned(const MilestoneRubric& r, double max, const json& verdict, std::string& why) {
+    if (verdict.value("status", std::string()) == "pass") return max;
+    const auto concepts = verdict.value("concepts", std::vector<std::string>{});
+    if (concepts.empty()) return 0;
+    double lost = 0;
+    std::set<const Part*> used;
+    for (const std::string& c : concepts) {
+        const Part* part = nullptr;
+        for (const Part& p : r.parts) {
+            if (std::find(p.topics.begin(), p.topics.end(), c) != p.topics.end()) part = &p;
+        }
+        if (part == nullptr) return 0;
+        if (used.insert(part).second) {
+            lost += part->points;
+            why += (why.empty() ? "" : "; ") + std::string("partial credit: lost ") + std::to_string(part->points) +
+                   " for " + (part->what.empty() ? c : part->what);
+        }
+    }
+    return std::max(0.0, max - lost);
+}
+
+std::string fmt_points(double p) {
+    std::ostringstream s;
+    s << std::setprecision(4) << p;
+    return s.str();
+}
+
+std::string html_escape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '&': out += "&amp;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&#39;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string base64(const std::string& bytes) {
+    static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    std::size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        const unsigned n = (static_cast<unsigned char>(bytes[i]) << 16) |
+                           (static_cast<unsigned char>(bytes[i + 1]) << 8) | static_cast<unsigned char>(bytes[i + 2]);
+        out += {k[n >> 18], k[(n >> 12) & 63], k[(n >> 6) & 63], k[n & 63]};
+    }
+    if (i + 1 == bytes.size()) {
+        const unsigned n = static_cast<unsigned char>(bytes[i]) << 16;
+        out += {k[n >> 18], k[(n >> 12) & 63], '=', '='};
+    } else if (i + 2 == bytes.size()) {
+        const unsigned n = (static_cast<unsigned char>(bytes[i]) << 16) | (static_cast<unsigned char>(bytes[i + 1]) << 8);
+        out += {k[n >> 18], k[(n >> 12) & 63], k[(n >> 6) & 63], '='};
+    }
+    return out;
+}
+
+const char* kStyle = R"(<style>
+body{font-family:system-ui,sans-serif;margin:1.5em;max-width:70em;color:#222}
+table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:.25em .5em;text-align:left}
+.pass{color:#186a1e}.fail{color:#a51d1d}.error{color:#a51d1d;font-weight:bold}
+section{border-top:1px solid #ddd;margin-top:1.2em;padding-top:.6em}
+figure{display:inline-block;margin:.3em .6em .3em 0}figcaption{font-size:.85em;color:#555}
+img{image-rendering:pixelated;width:192px;border:1px solid #999}
+pre{background:#f5f5f5;padding:.6em;overflow:auto;max-height:20em}
+</style>)";
+
+// One checkpoint's text for Gradescope's `output` and the HTML page.
+std::string checkpoint_output(const json& v, const std::string& why) {
+    std::ostringstream o;
+    o << v.value("title", std::string()) << "\n";
+    if (v.value("status", std::string()) == "pass") {
+        o << "passed";
+    } else {
+        o << "what is wrong:\n";
+        for (const std::string& f : v.value("findings", std::vector<std::string>{})) o << "  " << f << "\n";
+        const std::string hint = v.value("hint", std::string());
+        if (!hint.empty()) o << "hint: " << hint << "\n";
+        const std::string diag = v.value("diagnosis", std::string());
+        if (!diag.empty()) o << "known bug: " << diag << "\n";
+    }
+    if (!why.empty()) o << "\n" << why;
+    o << std::fixed << std::setprecision(3) << "\nrender time: yours " << v.value("student_ms", 0.0)
+      << " ms, reference " << v.value("reference_ms", 0.0) << " ms";
+    if (v.value("has_metrics", false)) {
+        o << "\nimage error: " << v["student"].value("differing_pixels", 0LL) << " pixel(s) differ, mean abs error "
+          << v["student"].value("mean_abs_error", 0.0);
+    }
+    return o.str();
+}
+
+int cmd_report(const std::vector<std::string>& args) {
+    if (args.size() < 3) throw std::invalid_argument("report needs <grading-dir> <rubric.json> <out-dir>");
+    const fs::path dir = args[0], out = args[2];
+    const auto rubric = read_rubric(args[1]);
+    std::string name = "submission", seed;
+    for (std::size_t i = 3; i + 1 < args.size(); i += 2) {
+        if (args[i] == "--name") name = args[i + 1];
+        else if (args[i] == "--seed") seed = args[i + 1];
+        else throw std::invalid_argument("unknown option " + args[i]);
+    }
+    fs::create_directories(out);
+    json tests = json::array();
+    double score = 0, total = 0;
+    std::ostringstream html, rows, sections;
+    std::map<std::string, std::pair<double, double>> per_milestone;  // earned, max
+    for (const auto& [m, r] : rubric) {
+        const fs::path mdir = dir / m;
+        if (!fs::is_directory(mdir)) continue;
+        const auto compile = read_status(mdir / "compile.status");
+        const bool compiled = compile.count("result") && compile.at("result") == "exited" && compile.at("exit") == "0";
+        std::string compile_log = read_text(mdir / "compile.log");
+        if (compile_log.size() > 20000) compile_log = compile_log.substr(0, 20000) + "\n[... cut]";
+        // The trusted list of checkpoints this milestone was graded on (written by the grader
+        // from `raster_grade ids` and the hidden ones): a missing verdict scores 0.
+        std::istringstream list(read_text(mdir / "checkpoints.txt"));
+        std::string line;
+        while (std::getline(list, line)) {
+            std::istringstream words(line);
+            std::string cname, visibility;
+            double listed_points = -1;
+            words >> cname >> visibility >> listed_points;
+            if (cname.empty()) continue;
+            json v;
+            const fs::path vf = mdir / "verdicts" / cname / "verdict.json";
+            try {
+                if (fs::is_regular_file(vf)) v = json::parse(read_text(vf));
+            } catch (const json::exception&) {
+                v = json{};
+            }
+            if (!v.is_object() || !v.contains("status")) {
+                v = {{"status", "error"},
+                     {"title", cname},
+                     {"findings", {compiled ? "[grader] no verdict for this checkpoint" :
+                                              "[compile] your code did not compile: see the compile log"}}};
+            }
+            const double max = listed_points >= 0 ? listed_points : max_points(r, cname, v);
+            std::string why;
+            const double got = earned(r, max, v, why);
+            score += got;
+            total += max;
+            per_milestone[m].first += got;
+            per_milestone[m].second += max;
+            std::string output = checkpoint_output(v, why);
+            if (!compiled) output = "compile error (the compile log is in the milestone's own test)\n" + output;
+            const bool hidden = visibility == "after_published";
+            tests.push_back({{"name", m + " " + cname},
+                             {"score", got},
+                             {"max_score", max},
+                             {"status", got >= max ? "passed" : "failed"},
+                             {"output", output},
+                             {"visibility", hidden ? "after_published" : "visible"}});
+            const std::string status = v.value("status", std::string("error"));
+            rows << "<tr><td><a href=\"#" << html_escape(m + "-" + cname) << "\">" << html_escape(cname)
+                 << "</a></td><td class=\"" << (status == "pass" ? "pass" : "fail") << "\">" << html_escape(status)
+                 << "</td><td>" << fmt_points(got) << " / " << fmt_points(max) << "</td><td>"
+                 << html_escape(json(v.value("concepts", std::vector<std::string>{})).dump()) << "</td><td>"
+                 << std::fixed << std::setprecision(3) << v.value("student_ms", 0.0) << "</td><td>"
+                 << v.value("reference_ms", 0.0) << "</td><td>"
+                 << (v.value("has_metrics", false) ? std::to_string(v["student"].value("differing_pixels", 0LL)) : "")
+                 << "</td></tr>\n";
+            rows.unsetf(std::ios::fixed);
+            sections << "<section id=\"" << html_escape(m + "-" + cname) << "\"><h3>" << html_escape(m + " " + cname)
+                     << (hidden ? " (hidden)" : "") << ": " << fmt_points(got) << " / " << fmt_points(max)
+                     << "</h3><pre>" << html_escape(output) << "</pre>\n";
+            for (const std::string& pic : v.value("pictures", std::vector<std::string>{})) {
+                // Only names the judge wrote, from its own folder.
+                const fs::path pf = mdir / "verdicts" / cname / (pic + ".png");
+                if (pic.find('/') != std::string::npos || !fs::is_regular_file(pf)) continue;
+                sections << "<figure><img alt=\"" << html_escape(pic) << "\" src=\"data:image/png;base64,"
+                         << base64(read_text(pf)) << "\"><figcaption>" << html_escape(pic) << "</figcaption></figure>";
+            }
+            sections << "</section>\n";
+        }
+        tests.push_back({{"name", m + " compiles"},
+                         {"score", 0},
+                         {"max_score", 0},
+                         {"status", compiled ? "passed" : "failed"},
+                         {"output", compiled ? std::string("compiled") : "compile error:\n" + compile_log},
+                         {"visibility", "visible"}});
+        if (!compiled) {
+            sections << "<section id=\"" << m << "-compile\"><h3>" << m
+                     << ": compile error</h3><pre>" << html_escape(compile_log) << "</pre></section>\n";
+        }
+    }
+    std::ostringstream summary;
+    summary << "Score " << fmt_points(score) << " / " << fmt_points(total) << ".";
+    for (const auto& [m, p] : per_milestone) summary << " " << m << ": " << fmt_points(p.first) << "/" << fmt_points(p.second) << ".";
+    if (!seed.empty()) summary << " Scene seed " << seed << ".";
+    json results = {{"score", score},
+                    {"output", summary.str()},
+                    {"tests", tests},
+                    {"visibility", "visible"},
+                    {"stdout_visibility", "hidden"}};
+    if (fs::exists(dir / "execution_time")) results["execution_time"] = std::stod(read_text(dir / "execution_time"));
+    std::ofstream(out / "results.json") << results.dump(2) << "\n";
+
+    html << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>Grade: " << html_escape(name)
+         << "</title>" << kStyle << "</head><body><h1>Grade: " << html_escape(name) << "</h1><p>"
+         << html_escape(summary.str()) << "</p><table><tr><th>checkpoint</th><th>status</th><th>points</th>"
+         << "<th>concepts</th><th>your ms</th><th>reference ms</th><th>pixels differ</th></tr>\n"
+         << rows.str() << "</table>\n" << sections.str() << "</body></html>\n";
+    std::ofstream(out / "report.html") << html.str();
+    std::cout << summary.str() << "\n";
+    return 0;
+}
+
+// ---- the class ----
+
+std::string csv_field(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"') out += '"';
+        out += c;
+    }
+    return out + "\"";
+}
+
+int cmd_class(const std::vector<std::string>& args) {
+    if (args.size() < 2) throw std::invalid_argument("class needs <out-dir> <results.json>...");
+    const fs::path out = args[0];
+    fs::create_directories(out);
+    struct Row {
+        std::string who;
+        double score = 0;
+        std::map<std::string, double> points, milestone;
+    };
+    std::vector<Row> rows;
+    std::vector<std::string> columns;  // checkpoint names, in first-seen order
+    std::map<std::string, double> max_of;
+    std::map<std::string, int> fails;
+    std::map<std::string, std::map<std::string, int>> concepts_of;  // checkpoint -> concept -> count
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const fs::path p = args[i];
+        Row row;
+        row.who = p.parent_path().filename().string();
+        json j;
+        try {
+            j = json::parse(read_text(p));
+        } catch (const json::exception&) {
+            std::cerr << "skipping unreadable " << p << "\n";
+            continue;
+        }
+        row.score = j.value("score", 0.0);
+        for (const json& t : j.value("tests", json::array())) {
+            const std::string name = t.value("name", std::string());
+            if (t.value("max_score", 0.0) <= 0) continue;
+            if (!max_of.count(name)) columns.push_back(name);
+            max_of[name] = t.value("max_score", 0.0);
+            row.points[name] = t.value("score", 0.0);
+            row.milestone[name.substr(0, name.find(' '))] += t.value("score", 0.0);
+            if (t.value("score", 0.0) < t.value("max_score", 0.0)) {
+                ++fails[name];
+                const std::string output = t.value("output", std::string());
+                // The concept of the first finding: "  [topic] ..." on the line after "what is wrong:".
+                const auto at = output.find("\n  [");
+                if (at != std::string::npos) {
+                    const auto end = output.find(']', at);
+                    concepts_of[name][output.substr(at + 4, end - at - 4)]++;
+                } else if (output.rfind("compile error", 0) == 0) {
+                    concepts_of[name]["compile error"]++;
+                }
+            }
+        }
+        rows.push_back(row);
+    }
+    std::set<std::string> milestones;
+    for (const std::string& c : columns) milestones.insert(c.substr(0, c.find(' ')));
+    std::ofstream csv(out / "class.csv");
+    csv << "submission,score";
+    for (const std::string& m : milestones) csv << "," << csv_field(m);
+    for (const std::string& c : columns) csv << "," << csv_field(c);
+    csv << "\n";
+    for (const Row& r : rows) {
+        csv << csv_field(r.who) << "," << fmt_points(r.score);
+        for (const std::string& m : milestones) csv << "," << fmt_points(r.milestone.count(m) ? r.milestone.at(m) : 0);
+        for (const std::string& c : columns) csv << "," << fmt_points(r.points.count(c) ? r.points.at(c) : 0);
+        csv << "\n";
+    }
+    std::vector<std::string> order = columns;
+    std::stable_sort(order.begin(), order.end(), [&](const std::string& a, const std::string& b) { return fails[a] > fails[b]; });
+    std::ofstream html(out / "class.html");
+    html << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>Class results</title>" << kStyle
+         << "</head><body><h1>Class results</h1><p>" << rows.size()
+         << " submission(s). The checkpoints the class fails most come first, with the concept their first "
+            "finding names.</p><table><tr><th>checkpoint</th><th>failed by</th><th>concepts</th></tr>\n";
+    for (const std::string& c : order) {
+        std::string concepts;
+        std::vector<std::pair<int, std::string>> byc;
+        for (const auto& [k, n] : concepts_of[c]) byc.push_back({-n, k});
+        std::sort(byc.begin(), byc.end());
+        for (const auto& [n, k] : byc) concepts += (concepts.empty() ? "" : ", ") + k + " (" + std::to_string(-n) + ")";
+        html << "<tr><td>" << html_escape(c) << "</td><td>" << fails[c] << " of " << rows.size() << "</td><td>"
+             << html_escape(concepts) << "</td></tr>\n";
+    }
+    html << "</table><h2>Submissions</h2><table><tr><th>submission</th><th>score</th>";
+    for (const std::string& m : milestones) html << "<th>" << html_escape(m) << "</th>";
+    html << "</tr>\n";
+    for (const Row& r : rows) {
+        html << "<tr><td><a href=\"" << html_escape(r.who) << "/report.html\">" << html_escape(r.who) << "</a></td><td>"
+             << fmt_points(r.score) << "</td>";
+        for (const std::string& m : milestones) html << "<td>" << fmt_points(r.milestone.count(m) ? r.milestone.at(m) : 0) << "</td>";
+        html << "</tr>\n";
+    }
+    html << "</table></body></html>\n";
+    std::cout << "class results: " << (out / "class.csv").string() << ", " << (out / "class.html").string() << "\n";
+    return 0;
+}
+
+// ---- what to grade ----
+
+// SplitMix64's finalizer: a hidden checkpoint's seed for one submission.
+std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
+    std::uint64_t z = a ^ (b + 0x9e3779b97f4a7c15ULL + (a << 6) + (a >> 2));
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return (z ^ (z >> 31)) & ((1ULL << 53) - 1);  // exact in a JSON number
+}
+
+// "m1 milestone1_lines lines.cpp [more files]" per milestone of the rubric.
+int cmd_rubric_files(const std::string& rubric_file) {
+    for (const auto& [m, r] : read_rubric(rubric_file)) {
+        std::cout << m << " " << r.folder;
+        for (const std::string& f : r.files) std::cout << " " << f;
+        std::cout << "\n";
+    }
+    return 0;
+}
+
+// The checkpoints of milestone <m> to grade, one per line:
+//   <name> <scene-id> <seed> <visibility> <points> <title...>
+// every public checkpoint (on the submission's seed), then the hidden ones of hidden.json:
+//   {"checkpoints": [{"name": "hidden.steep", "milestone": "m1", "scene": "m1.octant_2",
+//                     "seed": 912, "points": 2, "title": "..."}]}
+// A hidden checkpoint is a scene variant nobody outside the course staff has seen: its seed is
+// mixed with the submission's, and its results are shown after the grades are published.
+int cmd_plan(const std::vector<std::string>& args) {
+    if (args.size() < 3) throw std::invalid_argument("plan needs <rubric.json> <m> <seed> [hidden.json]");
+    const auto rubric = read_rubric(args[0]);
+    const std::string m = args[1];
+    const std::uint64_t seed = std::stoull(args[2]);
+    const MilestoneRubric& r = rubric.at(m);
+    const cp::Suite& s = suite(m);
+    for (const auto& [id, points] : r.points) {
+        if (std::find(s.ids.begin(), s.ids.end(), id) == s.ids.end()) {
+            throw std::invalid_argument("the rubric gives points to " + id + ", which is no checkpoint of " + m);
+        }
+    }
+    auto clean = [](std::string t) {
+        std::replace(t.begin(), t.end(), '\n', ' ');
+        std::replace(t.begin(), t.end(), '\r', ' ');
+        return t;
+    };
+    for (const std::string& id : s.ids) {
+        const auto it = r.points.find(id);
+        std::cout << id << " " << id << " " << seed << " visible "
+                  << fmt_points(it == r.points.end() ? r.default_points : it->second) << " " << clean(s.title(id)) << "\n";
+    }
+    if (args.size() >= 4 && !args[3].empty()) {
+        const json h = json::parse(read_text(args[3]));
+        std::set<std::string> names;
+        for (const json& c : h.at("checkpoints")) {
+            if (c.at("milestone").get<std::string>() != m) continue;
+            const std::string name = c.at("name").get<std::string>(), scene = c.at("scene").get<std::string>();
+            const bool plain = !name.empty() && std::all_of(name.begin(), name.end(), [](char ch) {
+                return std::isalnum(static_cast<unsigned char>(ch)) || ch == '.' || ch == '_' || ch == '-';
+            });
+            if (!plain || !names.insert(name).second) throw std::invalid_argument("hidden checkpoint name '" + name + "' is not a unique plain name");
+            if (std::find(s.ids.begin(), s.ids.end(), scene) == s.ids.end()) {
+                throw std::invalid_argument("hidden checkpoint " + name + ": no scene " + scene);
+            }
+            const std::uint64_t hseed = c.at("seed").get<std::uint64_t>();
+            std::cout << name << " " << scene << " " << (seed == 0 ? hseed : mix(seed, hseed)) << " after_published "
+                      << fmt_points(c.value("points", r.default_points)) << " "
+                      << clean(c.value("title", s.title(scene))) << "\n";
+        }
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    try {
+        if (args.size() >= 2 && args[0] == "ids") return cmd_ids(args[1]);
+        if (!args.empty() && args[0] == "judge") return cmd_judge({args.begin() + 1, args.end()});
+        if (!args.empty() && args[0] == "report") return cmd_report({args.begin() + 1, args.end()});
+        if (!args.empty() && args[0] == "class") return cmd_class({args.begin() + 1, args.end()});
+        if (args.size() >= 2 && args[0] == "rubric-files") return cmd_rubric_files(args[1]);
+        if (!args.empty() && args[0] == "plan") return cmd_plan({args.begin() + 1, args.end()});
+    } catch (const std::exception& e) {
+        std::cerr << "raster_grade: " << e.what() << "\n";
+        return 2;
+    }
+    std::cerr << "usage: raster_grade ids <m> | judge ... | report ... | class ... (see grader.cpp)\n";
+    return 2;
+}
