@@ -4,7 +4,7 @@
 # everything is already there.
 set -euo pipefail
 
-packages=(cmake make g++ pkg-config catch2 libstb-dev bubblewrap procps libtinyobjloader-dev
+packages=(cmake make g++ pkg-config catch2 libstb-dev bubblewrap procps zip unzip python3 libtinyobjloader-dev
           libgif-dev libglm-dev nlohmann-json3-dev "$@")
 # Optional: used by tests that look at pages (headless Chromium); installed where the
 # distribution has them as a real package, and the tests that need them skip otherwise.

@@ -1,0 +1,162 @@
+#!/usr/bin/env bash
+# The grader's own tests (CTest label `project`): tools/grading/grade on the reference, the
+# skeleton, a compile error, every deliberate bug, and hostile submissions.
+#
+#   grade_test.sh <case> <build-dir> <uid>
+#
+# Each case grades into a fresh folder with its own sandbox uid and its own temporary root
+# (RASTER_GRADE_TMP), so cases can run in parallel; afterwards no process of that uid and no
+# file in that root may be left, and the expected images and the judge must be unchanged.
+# Exit 0: the case holds; 77: skipped (no sandbox here); anything else: a failure, explained.
+set -euo pipefail
+case_name=$1 build=$2 uid=$3
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/../../.." && pwd)
+grade="$root/tools/grading/grade"
+work=$(mktemp -d /tmp/grade-test.XXXXXX)
+trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
+chmod 711 "$work"
+export RASTER_GRADE_TMP=$work/tmp
+mkdir -m 711 "$RASTER_GRADE_TMP"
+fail() { echo "FAIL ($case_name): $*" >&2; exit 1; }
+
+if [ "$(id -u)" != 0 ]; then echo "skipped: the grader's tests need root (a sandbox uid)"; exit 77; fi
+
+# A submission folder with each milestone's file: from solutions/, the skeleton, or given.
+make_submission() {  # dir [m1-file] [m2-file] [m3-file]
+  local dir=$1
+  mkdir -p "$dir/milestone1_lines" "$dir/milestone2_triangles" "$dir/milestone3_transforms"
+  cp "${2:-$root/solutions/milestone1_lines/lines.cpp}" "$dir/milestone1_lines/lines.cpp"
+  cp "${3:-$root/solutions/milestone2_triangles/triangles.cpp}" "$dir/milestone2_triangles/triangles.cpp"
+  cp "${4:-$root/solutions/milestone3_transforms/transforms.cpp}" "$dir/milestone3_transforms/transforms.cpp"
+}
+# score <results.json> [test-name-prefix]: the points earned (of tests with that prefix).
+score() { python3 -c "
+import json,sys
+r=json.load(open(sys.argv[1])); p=sys.argv[2] if len(sys.argv)>2 else ''
+s=sum(t['score'] for t in r['tests'] if t['name'].startswith(p)); print(int(s) if s==int(s) else s)" "$@"; }
+max_score() { python3 -c "
+import json,sys
+r=json.load(open(sys.argv[1])); p=sys.argv[2] if len(sys.argv)>2 else ''
+s=sum(t['max_score'] for t in r['tests'] if t['name'].startswith(p)); print(int(s) if s==int(s) else s)" "$@"; }
+
+fingerprint() {
+  (cd "$root/checkpoints/expected" && find . -type f -print0 | sort -z | xargs -0 sha256sum)
+  sha256sum "$build/checkpoints/raster_grade" "$root/tools/grading/grade" "$root/tools/grading/sandbox-run"
+}
+before=$(fingerprint)
+check_clean() {
+  if pgrep -u "$uid" >/dev/null 2>&1; then fail "processes of the sandbox uid $uid are left: $(pgrep -u "$uid" -a)"; fi
+  if pgrep -f raster-hostile-marker >/dev/null 2>&1; then fail "a hostile child survived: $(pgrep -af raster-hostile-marker)"; fi
+  [ -z "$(ls -A "$RASTER_GRADE_TMP")" ] || fail "files left in the grader's temporary root: $(ls -A "$RASTER_GRADE_TMP")"
+  [ -z "$(find /tmp /var/tmp /dev/shm -xdev -user "$uid" 2>/dev/null | head -n 3)" ] ||
+    fail "files of the sandbox uid left: $(find /tmp /var/tmp /dev/shm -xdev -user "$uid" 2>/dev/null | head -n 3)"
+  [ "$before" = "$(fingerprint)" ] || fail "the expected images, the judge or the grader changed"
+}
+
+case "$case_name" in
+  reference)
+    make_submission "$work/sub"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 "$work/sub"
+    got=$(score "$work/out/results.json") max=$(max_score "$work/out/results.json")
+    [ "$got" = "$max" ] || fail "the reference scores $got of $max"
+    python3 -c "import json; json.load(open('$work/out/results.json'))" || fail "results.json is not JSON"
+    [ -s "$work/out/report.html" ] || fail "no report.html"
+    ;;
+  skeleton)
+    make_submission "$work/sub" "$root/milestone1_lines/lines.cpp" "$root/milestone2_triangles/triangles.cpp" \
+      "$root/milestone3_transforms/transforms.cpp"
+    # The committed skeleton must be the generated one (another test checks); grade it.
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 "$work/sub"
+    got=$(score "$work/out/results.json")
+    [ "$got" = "0" ] || fail "the skeleton scores $got"
+    ;;
+  compile_error)
+    # One milestone that does not compile costs that milestone only; given as a zip.
+    printf 'this is not C++\n' >"$work/broken.cpp"
+    make_submission "$work/sub" "" "$work/broken.cpp"
+    (cd "$work/sub" && zip -qr "$work/sub.zip" .)
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 "$work/sub.zip"
+    r=$work/out/results.json
+    [ "$(score "$r" m2)" = "0" ] || fail "m2 does not compile, yet scores $(score "$r" m2)"
+    [ "$(score "$r" m1)" = "$(max_score "$r" m1)" ] || fail "m1 lost points for m2's compile error"
+    [ "$(score "$r" m3)" = "$(max_score "$r" m3)" ] || fail "m3 lost points for m2's compile error"
+    grep -q "not C++" "$r" || fail "the compile log is not in results.json"
+    ;;
+  bugs-m*)
+    # Every deliberate bug loses the points of every checkpoint it names (and is graded on them).
+    m=${case_name#bugs-}
+    for bugfile in "$root/checkpoints/$m/bugs/"*.bug; do
+      bug=$(basename "$bugfile" .bug)
+      src=$build/checkpoints/generated/$m/bug_$bug.cpp
+      [ -f "$src" ] || fail "no generated source $src (build project-tests first)"
+      must_fail=$(sed -n 's/^must_fail:[ ]*//p' "$bugfile" | tr -s ' ' ',')
+      case "$m" in
+        m1) make_submission "$work/$bug" "$src" ;;
+        m2) make_submission "$work/$bug" "" "$src" ;;
+        m3) make_submission "$work/$bug" "" "" "$src" ;;
+      esac
+      bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out-$bug" --seed 1 --milestones "$m" \
+        --only "$must_fail" --time 4 --watchdog 1 "$work/$bug" >"$work/$bug.log" 2>&1 ||
+        { cat "$work/$bug.log"; fail "grading bug $bug failed"; }
+      python3 - "$work/out-$bug/results.json" "$bug" "$must_fail" <<'PY' || fail "bug $bug: see above"
+import json, sys
+r = json.load(open(sys.argv[1])); bug = sys.argv[2]; names = sys.argv[3].split(',')
+tests = {t['name'].split(' ', 1)[1]: t for t in r['tests'] if ' ' in t['name']}
+bad = [n for n in names if n not in tests or tests[n]['score'] >= tests[n]['max_score']]
+if bad:
+    print(f"bug {bug} keeps the points of {bad}", file=sys.stderr); sys.exit(1)
+PY
+    done
+    ;;
+  hostile-*)
+    attack=${case_name#hostile-}
+    src=$here/hostile_submissions/$attack.cpp
+    sed -e "s|@SOURCE@|$root|g" -e "s|@GRADE@|$build/checkpoints/raster_grade|g" "$src" >"$work/lines.cpp"
+    make_submission "$work/sub" "$work/lines.cpp"
+    # Public scenes (seed 0): the expected images are exactly the committed ones the attacks go for.
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --public --milestones m1 \
+      --only m1.octant_1,m1.clip_one_edge --time 3 --watchdog 2 "$work/sub" >"$work/log" 2>&1 ||
+      { cat "$work/log"; fail "the grader itself failed"; }
+    r=$work/out/results.json
+    got=$(score "$r")
+    [ "$got" = "0" ] || { cat "$work/log"; fail "the attack scored $got"; }
+    if grep -q "<script>" "$work/out/report.html"; then fail "report.html contains the submission's markup"; fi
+    python3 -c "import json; json.load(open('$r'))" || fail "results.json is not JSON"
+    ;;
+  stray_reset)
+    # The reference, but every line also writes outside the image and then hides it by
+    # assigning a fresh copy over the image (which resets Image::stray_writes()).
+    sed 's/^void draw_line(Image& img, Vec2 a, Vec2 b, Color c) {/void real_draw_line(Image\& img, Vec2 a, Vec2 b, Color c) {/' \
+      "$root/solutions/milestone1_lines/lines.cpp" >"$work/lines.cpp"
+    grep -q real_draw_line "$work/lines.cpp" || fail "could not rename draw_line in the solution"
+    cat >>"$work/lines.cpp" <<'CPP'
+namespace m1 {
+inline namespace RASTER_FLAVOUR {
+void draw_line(Image& img, Vec2 a, Vec2 b, Color c) {
+    real_draw_line(img, a, b, c);
+    img.set(-3, -3, c);  // outside
+    Image fresh(img.width(), img.height());
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) fresh.set(x, y, img.at(x, y));
+    img = fresh;  // stray_writes() is 0 again
+}
+}  // namespace RASTER_FLAVOUR
+}  // namespace m1
+CPP
+    make_submission "$work/sub" "$work/lines.cpp"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
+      --only m1.octant_1,m1.outcodes "$work/sub" >"$work/log" 2>&1 || { cat "$work/log"; fail "grading failed"; }
+    r=$work/out/results.json
+    python3 - "$r" <<'PY' || fail "hidden stray writes were not caught"
+import json, sys
+t = {x['name']: x for x in json.load(open(sys.argv[1]))['tests']}
+assert t['m1 m1.octant_1']['score'] == 0, t['m1 m1.octant_1']
+assert 'outside the image' in t['m1 m1.octant_1']['output'], t['m1 m1.octant_1']['output']
+assert t['m1 m1.outcodes']['score'] == t['m1 m1.outcodes']['max_score'], "a checkpoint without draw_line lost points"
+PY
+    ;;
+  *) fail "unknown case" ;;
+esac
+check_clean
+echo "ok: $case_name"
