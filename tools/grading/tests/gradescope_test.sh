@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# The Gradescope package end to end, as Gradescope runs it, in a simulated /autograder
+# (AUTOGRADER_ROOT) as root with the `plain` sandbox (Gradescope's containers have no
+# namespaces): build the zip, unpack it, run setup.sh, put the reference in as the submission,
+# run run_autograder; results.json must give full marks with Gradescope's fields; then a
+# skeleton must score 0.
+#   gradescope_test.sh <uid-unused>
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/../../.." && pwd)
+[ "$(id -u)" = 0 ] || { echo "skipped: needs root"; exit 77; }
+work=$(mktemp -d /tmp/gradescope-test.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+chmod 711 "$work"
+ag=$work/autograder
+mkdir -p "$ag/source" "$ag/submission" "$work/hidden"
+cat >"$work/hidden/hidden.json" <<'JSON'
+{"checkpoints": [{"name": "hidden.steep", "milestone": "m1", "scene": "m1.octant_2", "seed": 4242, "points": 3}]}
+JSON
+bash "$root/tools/grading/gradescope-package" "$work/autograder.zip" --hidden "$work/hidden"
+(cd "$ag/source" && unzip -qq "$work/autograder.zip")
+for f in setup.sh run_autograder hidden/hidden.json; do [ -f "$ag/source/$f" ] || { echo "no $f in the zip"; exit 1; }; done
+AUTOGRADER_ROOT=$ag bash "$ag/source/setup.sh" >"$work/setup.log" 2>&1 || { tail -n 30 "$work/setup.log"; exit 1; }
+cp "$root/solutions/milestone1_lines/lines.cpp" "$root/solutions/milestone2_triangles/triangles.cpp" \
+   "$root/solutions/milestone3_transforms/transforms.cpp" "$ag/submission/"
+AUTOGRADER_ROOT=$ag RASTER_SANDBOX_MODE=plain bash "$ag/source/run_autograder" >"$work/run.log" 2>&1 || true
+python3 - "$ag/results/results.json" full <<'PY' || { cat "$work/run.log"; exit 1; }
+import json, sys
+r = json.load(open(sys.argv[1]))
+for key in ("score", "execution_time", "output", "tests"):
+    assert key in r, f"results.json has no {key}"
+for t in r["tests"]:
+    for key in ("name", "score", "max_score", "status", "output", "visibility"):
+        assert key in t, f"a test has no {key}: {t}"
+total = sum(t["max_score"] for t in r["tests"])
+assert total > 0 and abs(r["score"] - total) < 1e-9, f"the reference scores {r['score']} of {total}"
+hidden = [t for t in r["tests"] if "hidden.steep" in t["name"]]
+assert hidden and hidden[0]["visibility"] == "after_published", "the hidden checkpoint is missing or visible"
+print("reference:", r["score"], "of", total)
+PY
+cp "$root/milestone1_lines/lines.cpp" "$root/milestone2_triangles/triangles.cpp" \
+   "$root/milestone3_transforms/transforms.cpp" "$ag/submission/"
+AUTOGRADER_ROOT=$ag RASTER_SANDBOX_MODE=plain bash "$ag/source/run_autograder" >"$work/run.log" 2>&1 || true
+python3 -c "
+import json,sys; r=json.load(open('$ag/results/results.json')); assert r['score']==0, r['score']; print('skeleton: 0')" ||
+  { cat "$work/run.log"; exit 1; }
