@@ -326,6 +326,12 @@ std::string html_escape(const std::string& s) {
     return out;
 }
 
+std::string join(const std::vector<std::string>& parts, const std::string& sep) {
+    std::string out;
+    for (const std::string& p : parts) out += (out.empty() ? "" : sep) + p;
+    return out;
+}
+
 std::string base64(const std::string& bytes) {
     static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     std::string out;
@@ -352,8 +358,15 @@ table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:.25em .5em;te
 section{border-top:1px solid #ddd;margin-top:1.2em;padding-top:.6em}
 figure{display:inline-block;margin:.3em .6em .3em 0}figcaption{font-size:.85em;color:#555}
 img{image-rendering:pixelated;width:192px;border:1px solid #999}
-pre{background:#f5f5f5;padding:.6em;overflow:auto;max-height:20em}
+pre{background:#f5f5f5;padding:.6em;white-space:pre-wrap;max-height:24em;overflow:auto}
 </style>)";
+
+// Marks the page once every picture has loaded: data-broken counts the ones that did not (the
+// grader's tests read it through headless Chromium). The only script on the page.
+const char* kLoadMarker =
+    "<script>addEventListener('load',()=>{document.body.dataset.broken="
+    "[...document.images].filter(i=>!i.naturalWidth).length;"
+    "document.body.dataset.pictures=document.images.length;});</script>\n";
 
 // One checkpoint's text for Gradescope's `output` and the HTML page.
 std::string checkpoint_output(const json& v, const std::string& why) {
@@ -444,7 +457,7 @@ int cmd_report(const std::vector<std::string>& args) {
             rows << "<tr><td><a href=\"#" << html_escape(m + "-" + cname) << "\">" << html_escape(cname)
                  << "</a></td><td class=\"" << (status == "pass" ? "pass" : "fail") << "\">" << html_escape(status)
                  << "</td><td>" << fmt_points(got) << " / " << fmt_points(max) << "</td><td>"
-                 << html_escape(json(v.value("concepts", std::vector<std::string>{})).dump()) << "</td><td>"
+                 << html_escape(join(v.value("concepts", std::vector<std::string>{}), ", ")) << "</td><td>"
                  << std::fixed << std::setprecision(3) << v.value("student_ms", 0.0) << "</td><td>"
                  << v.value("reference_ms", 0.0) << "</td><td>"
                  << (v.value("has_metrics", false) ? std::to_string(v["student"].value("differing_pixels", 0LL)) : "")
@@ -453,7 +466,20 @@ int cmd_report(const std::vector<std::string>& args) {
             sections << "<section id=\"" << html_escape(m + "-" + cname) << "\"><h3>" << html_escape(m + " " + cname)
                      << (hidden ? " (hidden)" : "") << ": " << fmt_points(got) << " / " << fmt_points(max)
                      << "</h3><pre>" << html_escape(output) << "</pre>\n";
-            for (const std::string& pic : v.value("pictures", std::vector<std::string>{})) {
+            // The student's main picture first, then its other pictures, the expected image and
+            // the difference.
+            const auto listed = v.value("pictures", std::vector<std::string>{});
+            std::vector<std::string> pics;
+            auto take = [&](auto keep) {
+                for (const std::string& p : listed) {
+                    if (keep(p)) pics.push_back(p);
+                }
+            };
+            take([](const std::string& p) { return p == "actual"; });
+            take([](const std::string& p) { return p != "actual" && p != "expected" && p != "diff"; });
+            take([](const std::string& p) { return p == "expected"; });
+            take([](const std::string& p) { return p == "diff"; });
+            for (const std::string& pic : pics) {
                 // Only names the judge wrote, from its own folder.
                 const fs::path pf = mdir / "verdicts" / cname / (pic + ".png");
                 if (pic.find('/') != std::string::npos || !fs::is_regular_file(pf)) continue;
@@ -489,7 +515,7 @@ int cmd_report(const std::vector<std::string>& args) {
          << "</title>" << kStyle << "</head><body><h1>Grade: " << html_escape(name) << "</h1><p>"
          << html_escape(summary.str()) << "</p><table><tr><th>checkpoint</th><th>status</th><th>points</th>"
          << "<th>concepts</th><th>your ms</th><th>reference ms</th><th>pixels differ</th></tr>\n"
-         << rows.str() << "</table>\n" << sections.str() << "</body></html>\n";
+         << rows.str() << "</table>\n" << sections.str() << kLoadMarker << "</body></html>\n";
     std::ofstream(out / "report.html") << html.str();
     std::cout << summary.str() << "\n";
     return 0;
@@ -593,7 +619,7 @@ int cmd_class(const std::vector<std::string>& args) {
         for (const std::string& m : milestones) html << "<td>" << fmt_points(r.milestone.count(m) ? r.milestone.at(m) : 0) << "</td>";
         html << "</tr>\n";
     }
-    html << "</table></body></html>\n";
+    html << "</table>" << kLoadMarker << "</body></html>\n";
     std::cout << "class results: " << (out / "class.csv").string() << ", " << (out / "class.html").string() << "\n";
     return 0;
 }

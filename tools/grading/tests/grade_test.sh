@@ -121,7 +121,7 @@ PY
     r=$work/out/results.json
     got=$(score "$r")
     [ "$got" = "0" ] || { cat "$work/log"; fail "the attack scored $got"; }
-    if grep -q "<script>" "$work/out/report.html"; then fail "report.html contains the submission's markup"; fi
+    if grep -q "<script>document" "$work/out/report.html"; then fail "report.html contains the submission's markup"; fi
     python3 -c "import json; json.load(open('$r'))" || fail "results.json is not JSON"
     ;;
   stray_reset)
@@ -155,6 +155,49 @@ assert t['m1 m1.octant_1']['score'] == 0, t['m1 m1.octant_1']
 assert 'outside the image' in t['m1 m1.octant_1']['output'], t['m1 m1.octant_1']['output']
 assert t['m1 m1.outcodes']['score'] == t['m1 m1.outcodes']['max_score'], "a checkpoint without draw_line lost points"
 PY
+    ;;
+  report_html)
+    # The per-submission page in a browser: a section per checkpoint with the student's picture,
+    # every picture loads (they are inline), and a failing checkpoint shows its findings.
+    browser=$(command -v chromium || command -v chromium-browser || true)
+    [ -n "$browser" ] || { echo "skipped: chromium is not installed"; exit 77; }
+    make_submission "$work/sub" "$build/checkpoints/generated/m1/bug_wrong_octants.cpp"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1,m2 \
+      --only m1.octant_1,m1.octant_3,m1.clip_one_edge,m2.top_left "$work/sub" >"$work/log" 2>&1 ||
+      { cat "$work/log"; fail "grading failed"; }
+    page=$work/out/report.html
+    dom=$("$browser" --headless --no-sandbox --disable-gpu --virtual-time-budget=5000 --dump-dom "file://$page" 2>/dev/null)
+    "$browser" --headless --no-sandbox --disable-gpu --window-size=1200,2000 --screenshot="$build/grading/report_example.png" \
+      "file://$page" >/dev/null 2>&1 || true
+    sections=$(grep -o '<section id="[^"]*"' <<<"$dom" | wc -l)
+    actuals=$(grep -o '<img alt="actual"' <<<"$dom" | wc -l)
+    broken=$(grep -o 'data-broken="[0-9]*"' <<<"$dom" | grep -o '[0-9]*' || true)
+    [ "$sections" = 4 ] || fail "$sections sections for 4 checkpoints"
+    [ "$actuals" = 4 ] || fail "$actuals of 4 sections show the student's picture"
+    [ "${broken:-x}" = 0 ] || fail "pictures did not load (data-broken=${broken:-missing})"
+    grep -q 'octant' <<<"$dom" || fail "the failing checkpoint's findings are not on the page"
+    ;;
+  batch)
+    # A class of three (the reference as a zip, the skeleton, one bug) graded two at a time:
+    # class.csv has a row each with the right totals, class.html names the most failed concept.
+    mkdir "$work/class"
+    make_submission "$work/ref"; (cd "$work/ref" && zip -qr "$work/class/alice.zip" .)
+    make_submission "$work/class/bob" "$root/milestone1_lines/lines.cpp"
+    make_submission "$work/class/carol" "$build/checkpoints/generated/m1/bug_wrong_octants.cpp"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
+      --only m1.outcodes,m1.octant_1,m1.octant_3 --batch "$work/class" >"$work/log" 2>&1 ||
+      { cat "$work/log"; fail "batch grading failed"; }
+    python3 - "$work/out/class.csv" <<'PY' || { cat "$work/log"; fail "class.csv is wrong"; }
+import csv, sys
+rows = {r["submission"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert set(rows) == {"alice", "bob", "carol"}, rows.keys()
+assert float(rows["alice"]["m1"]) == 5, rows["alice"]
+assert float(rows["bob"]["m1"]) == 0, rows["bob"]
+assert 0 < float(rows["carol"]["m1"]) < 5, rows["carol"]
+assert float(rows["carol"]["m1 m1.octant_3"]) == 0, rows["carol"]
+PY
+    grep -q 'octant' "$work/out/class.html" || fail "class.html does not name the concept"
+    for who in alice bob carol; do [ -f "$work/out/$who/report.html" ] || fail "no report for $who"; done
     ;;
   *) fail "unknown case" ;;
 esac
