@@ -199,6 +199,27 @@ PY
     grep -q 'octant' "$work/out/class.html" || fail "class.html does not name the concept"
     for who in alice bob carol; do [ -f "$work/out/$who/report.html" ] || fail "no report for $who"; done
     ;;
+  cumulative)
+    # Empty milestones 1 and 2 (the skeleton) under a correct milestone 3: by default milestone 3
+    # is drawn with the reference of 1 and 2 and keeps its points; --cumulative uses the
+    # student's own, and the pictures (not the numbers) lose theirs.
+    make_submission "$work/sub" "$root/milestone1_lines/lines.cpp" "$root/milestone2_triangles/triangles.cpp"
+    for mode in default cumulative; do
+      flag=(); [ "$mode" = cumulative ] && flag=(--cumulative)
+      bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/$mode" --seed 1 --milestones m3 \
+        --only m3.matrix_ops,m3.wireframe_cube,m3.solid_cube "${flag[@]}" "$work/sub" >"$work/$mode.log" 2>&1 ||
+        { cat "$work/$mode.log"; fail "grading ($mode) failed"; }
+    done
+    python3 - "$work/default/results.json" "$work/cumulative/results.json" <<'PY' || fail "see above"
+import json, sys
+d = {t["name"]: t for t in json.load(open(sys.argv[1]))["tests"]}
+c = {t["name"]: t for t in json.load(open(sys.argv[2]))["tests"]}
+for n in ("m3 m3.matrix_ops", "m3 m3.wireframe_cube", "m3 m3.solid_cube"):
+    assert d[n]["score"] == d[n]["max_score"], f"default grading charged {n} for milestones 1-2"
+assert c["m3 m3.matrix_ops"]["score"] == c["m3 m3.matrix_ops"]["max_score"], "numbers need no drawing"
+assert c["m3 m3.wireframe_cube"]["score"] == 0 and c["m3 m3.solid_cube"]["score"] == 0, "cumulative kept the points"
+PY
+    ;;
   *) fail "unknown case" ;;
 esac
 check_clean
