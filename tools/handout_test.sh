@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The student handout (tools/export-handout) end to end: it holds no solution, bug, variant or
+# grader; it builds from scratch; `make check` runs every checkpoint (all failing on the
+# skeleton); and with a milestone's model answer dropped in, that milestone's checkpoints pass.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=$1
+work=$(mktemp -d /tmp/handout-test.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+bash "$root/tools/export-handout" "$work/handout" --build "$build"
+h=$work/handout
+for gone in solutions tools/grading checkpoints/grader.cpp checkpoints/m1/bugs checkpoints/m1/variants; do
+  [ ! -e "$h/$gone" ] || { echo "the handout has $gone"; exit 1; }
+done
+[ -z "$(find "$h" -name '*.bug' -o -name '*.variant' -o -name 'hidden.json')" ] || { echo "the handout has bugs, variants or hidden checkpoints"; exit 1; }
+# No file of the handout is a solution file, under any name.
+for s in "$root"/solutions/*/*.cpp; do
+  sum=$(sha256sum <"$s")
+  while IFS= read -r -d '' f; do
+    [ "$(sha256sum <"$f")" != "$sum" ] || { echo "$f is the solution $s"; exit 1; }
+  done < <(find "$h" -type f -name '*.cpp' -print0)
+done
+cmake -S "$h" -B "$h/build" >"$work/configure.log" 2>&1 || { cat "$work/configure.log"; exit 1; }
+cmake --build "$h/build" -j2 >"$work/build.log" 2>&1 || { tail -n 40 "$work/build.log"; exit 1; }
+if make -C "$h/build" check >"$work/check.log" 2>&1; then echo "make check passed on the skeleton"; exit 1; fi
+grep -q "0 passed, 74 failed" "$work/check.log" || { tail -n 20 "$work/check.log"; echo "make check did not run every checkpoint"; exit 1; }
+cp "$root/solutions/milestone1_lines/lines.cpp" "$h/milestone1_lines/lines.cpp"
+make -C "$h/build" check-m1 >"$work/check-m1.log" 2>&1 || { tail -n 30 "$work/check-m1.log"; exit 1; }
+grep -q "All checkpoints pass" "$work/check-m1.log" || { tail -n 20 "$work/check-m1.log"; exit 1; }
+echo "the handout builds, and make check works in it"
