@@ -17,34 +17,24 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "harness/diagnosis.h"
 #include "harness/record.h"
 
 namespace {
 
-std::string json_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) < 0x20) continue;
-        out += c;
-    }
-    return out;
+nlohmann::json json_number(double v) {
+    if (!std::isfinite(v)) return nullptr;  // JSON has no infinity (PSNR of identical images)
+    return v;
 }
 
-std::string json_number(double v) {
-    if (!std::isfinite(v)) return "null";  // JSON has no infinity (PSNR of identical images)
-    std::ostringstream s;
-    s << std::setprecision(10) << v;
-    return s.str();
-}
-
-std::string json_metrics(const raster::ImageMetrics& m) {
-    return "{\"differing_pixels\": " + std::to_string(m.differing_pixels) +
-           ", \"differing_share\": " + json_number(m.differing_share) +
-           ", \"max_channel_diff\": " + std::to_string(m.max_channel_diff) +
-           ", \"mean_abs_error\": " + json_number(m.mean_abs_error) +
-           ", \"psnr_db\": " + json_number(m.psnr_db) + "}";
+nlohmann::json json_metrics(const raster::ImageMetrics& m) {
+    return {{"differing_pixels", m.differing_pixels},
+            {"differing_share", json_number(m.differing_share)},
+            {"max_channel_diff", m.max_channel_diff},
+            {"mean_abs_error", json_number(m.mean_abs_error)},
+            {"psnr_db", json_number(m.psnr_db)}};
 }
 
 std::string html_escape(const std::string& s) {
@@ -71,8 +61,8 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
             "<h1>Checkpoints</h1>\n<table><tr><th>checkpoint<th>result<th>pixels differ<th>mean error"
             "<th>your ms<th>reference ms<th>needs TODOs<th>concepts</tr>\n";
     for (const cp::Record& r : records) {
-        html << "<tr><td><a href=\"#" << html_escape(r.id) << "\">" << html_escape(r.id) << "</a><td class=" << r.status
-             << ">" << r.status;
+        html << "<tr><td><a href=\"#" << html_escape(r.id) << "\">" << html_escape(r.id) << "</a><td class=\"" << html_escape(r.status)
+             << "\">" << html_escape(r.status);
         if (r.has_metrics) {
             html << std::fixed << std::setprecision(3) << "<td>" << r.student.differing_pixels << "<td>"
                  << r.student.mean_abs_error << "<td>" << r.student_ms << "<td>" << r.reference_ms;
@@ -94,7 +84,8 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
     if (any_measure) html << "</table>\n";
     for (const cp::Record& r : records) {
         html << "<h2 id=\"" << html_escape(r.id) << "\">" << html_escape(r.id) << ": " << html_escape(r.title)
-             << "</h2>\n<p class=" << r.status << ">" << r.status << " " << html_escape(r.concepts) << "</p>\n";
+             << "</h2>\n<p class=\"" << html_escape(r.status) << "\">" << html_escape(r.status) << " "
+             << html_escape(r.concepts) << "</p>\n";
         if (!r.todos.empty()) html << "<p>needs TODOs " << html_escape(r.todos) << "</p>\n";
         if (!r.findings.empty()) {
             html << "<ul>";
@@ -213,10 +204,8 @@ int main(int argc, char** argv) {
               << std::right << std::setw(12) << "px differ" << std::setw(10) << "mean err"
               << std::setw(11) << "your ms" << std::setw(11) << "ref ms" << "  concept\n"
               << std::string(100, '-') << "\n";
-    std::ofstream json(json_path);
-    json << "{\n  \"checkpoints\": [\n";
-    for (std::size_t i = 0; i < records.size(); ++i) {
-        const cp::Record& r = records[i];
+    nlohmann::json checkpoints = nlohmann::json::array();
+    for (const cp::Record& r : records) {
         std::string result = r.status == "pass" ? "PASS" : r.status == "fail" ? "FAIL" : "CRASH";
         passed += r.status == "pass";
         failed += r.status == "fail";
@@ -233,29 +222,30 @@ int main(int argc, char** argv) {
         std::cout << "  "
                   << (r.status == "crashed" ? "crashed or timed out (see below)" : r.concepts)
                   << "\n";
-        json << "    {\"id\": \"" << json_escape(r.id) << "\", \"milestone\": \""
-             << json_escape(r.milestone) << "\", \"title\": \"" << json_escape(r.title)
-             << "\", \"status\": \"" << r.status << "\", \"concepts\": \""
-             << json_escape(r.concepts) << "\", \"student_ms\": " << json_number(r.student_ms)
-             << ", \"reference_ms\": " << json_number(r.reference_ms)
-             << ", \"student_error\": " << (r.has_metrics ? json_metrics(r.student) : "null")
-             << ", \"reference_error\": " << (r.has_metrics ? json_metrics(r.reference) : "null")
-             << ", \"measures\": {";
-        for (auto it = r.measures.begin(); it != r.measures.end(); ++it) {
-            json << (it == r.measures.begin() ? "" : ", ") << "\"" << json_escape(it->first)
-                 << "\": " << json_number(it->second);
-        }
-        json << "}, \"findings\": [";
-        for (std::size_t k = 0; k < r.findings.size(); ++k) {
-            json << (k ? ", " : "") << "\"" << json_escape(r.findings[k]) << "\"";
-        }
-        json << "], \"hint\": \"" << json_escape(r.hint) << "\", \"diagnosis\": \"" << json_escape(r.diagnosis)
-             << "\", \"todos\": \"" << json_escape(r.todos)
-             << "\", \"pictures\": \"" << json_escape(r.output_dir) << "\"}"
-             << (i + 1 < records.size() ? "," : "") << "\n";
+        nlohmann::json measures = nlohmann::json::object();
+        for (const auto& [name, v] : r.measures) measures[name] = json_number(v);
+        checkpoints.push_back({{"id", r.id},
+                               {"milestone", r.milestone},
+                               {"title", r.title},
+                               {"status", r.status},
+                               {"concepts", r.concepts},
+                               {"student_ms", json_number(r.student_ms)},
+                               {"reference_ms", json_number(r.reference_ms)},
+                               {"student_error", r.has_metrics ? json_metrics(r.student) : nlohmann::json()},
+                               {"reference_error", r.has_metrics ? json_metrics(r.reference) : nlohmann::json()},
+                               {"measures", measures},
+                               {"findings", r.findings},
+                               {"hint", r.hint},
+                               {"diagnosis", r.diagnosis},
+                               {"todos", r.todos},
+                               {"pictures", r.output_dir}});
     }
-    json << "  ],\n  \"passed\": " << passed << ",\n  \"failed\": " << failed
-         << ",\n  \"crashed\": " << crashed << "\n}\n";
+    std::ofstream(json_path) << nlohmann::json{{"checkpoints", checkpoints},
+                                               {"passed", passed},
+                                               {"failed", failed},
+                                               {"crashed", crashed}}
+                                    .dump(2)
+                             << "\n";
 
     std::cout << std::string(100, '-') << "\n";
     // Numbers some checkpoints measure beside their verdict, against the render time: for
