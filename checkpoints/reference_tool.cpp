@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "harness/checkpoint.h"
 #include "harness/showcase.h"
 #include "m1/render.h"
@@ -204,21 +206,44 @@ int marked_table(const std::string& name, const std::string& table, const std::v
     return 0;
 }
 
-// A milestone's checkpoints with the TODOs each needs: the TODOs of every function the
-// reference calls on the scene (and of the functions those use), as `make check` prints them.
+// A milestone's checkpoints with the TODOs each needs (the TODOs of every function the
+// reference calls on the scene, and of the functions those use, as `make check` prints them)
+// and the points each is worth when graded (checkpoints/rubric.json, and its partial credit).
 std::string todo_table_text(const std::string& milestone) {
     cp::Suite suite;
     if (milestone == "m1") suite.functions = m1cp::functions();
     if (milestone == "m2") suite.functions = m2cp::functions();
     if (milestone == "m3") suite.functions = m3cp::functions();
     if (suite.functions.empty()) throw std::runtime_error("no milestone named " + milestone);
+    std::ifstream rubric_file(RASTER_RUBRIC);
+    if (!rubric_file) throw std::runtime_error(std::string("cannot read the rubric ") + RASTER_RUBRIC);
+    const nlohmann::json rubric = nlohmann::json::parse(rubric_file).at("milestones").at(milestone);
+    const double default_points = rubric.value("default_points", 1.0);
+    const auto points = rubric.value("points", std::map<std::string, double>{});
+    auto fmt = [](double p) {
+        std::ostringstream s;
+        s << p;
+        return s.str();
+    };
     std::ostringstream out;
-    out << "| needs TODOs | checkpoint | what it checks |\n|---|---|---|\n";
+    double total = 0;
+    out << "| needs TODOs | checkpoint | points | what it checks |\n|---|---|---|---|\n";
     for (const Entry& e : all_scenes()) {
         if (e.milestone != milestone) continue;
-        out << "| " << cp::todo_list(cp::needed_todos(suite, e.render(e.id))) << " | `" << e.id << "` | " << e.title
-            << " |\n";
+        const auto it = points.find(e.id);
+        const double p = it == points.end() ? default_points : it->second;
+        total += p;
+        out << "| " << cp::todo_list(cp::needed_todos(suite, e.render(e.id))) << " | `" << e.id << "` | " << fmt(p)
+            << " | " << e.title << " |\n";
     }
+    out << "\nGraded, the milestone is worth " << fmt(total) << " points (checkpoints/rubric.json). A failed "
+        << "checkpoint scores 0";
+    const nlohmann::json partial = rubric.value("partial", nlohmann::json::array());
+    for (const nlohmann::json& part : partial) {
+        out << "; one that fails only on " << part.value("what", std::string("one property")) << " loses "
+            << fmt(part.value("points", 0.0)) << " point(s) instead";
+    }
+    out << ".\n";
     return out.str();
 }
 
