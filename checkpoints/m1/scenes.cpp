@@ -2,7 +2,14 @@
 
 #include "harness/checkpoint.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <set>
+#include <string_view>
+#include <utility>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -27,11 +34,17 @@ Segment aa_line(Vec2 a, Vec2 b, Color c = white) { return {a, b, c, true}; }
 //   5 shallow left-up      6 steep up-left      7 steep up-right    8 shallow right-up
 // Each octant scene is the octant-1 scene mapped by the symmetry of the 48x48 square that
 // carries octant 1 onto that octant, so all eight test the same slopes.
-Scene octant_scene(int octant) {
+struct Ij {
+    int i, j;
+};
+// Octant-1 lines with slopes 1/4 (every other step a tie), 17/28, 1/4 from an odd start,
+// 11/12 (nearly diagonal) and 5/43 (long and flat), placed so no two share a pixel and
+// each can be checked on its own.
+constexpr Ij kOctantBase[5][2] = {{{4, 1}, {40, 10}}, {{18, 13}, {46, 30}}, {{9, 33}, {29, 38}},
+                                  {{2, 12}, {14, 23}}, {{2, 41}, {45, 46}}};
+
+Scene octant_scene(int octant, const Ij (&base)[5][2] = kOctantBase) {
     constexpr int n = 47;  // last pixel index of a 48x48 image
-    struct Ij {
-        int i, j;
-    };
     auto map = [octant](Ij p) -> Ij {
         switch (octant) {
             case 1: return p;
@@ -44,11 +57,6 @@ Scene octant_scene(int octant) {
             default: return {p.i, n - p.j};
         }
     };
-    // Octant-1 lines with slopes 1/4 (every other step a tie), 17/28, 1/4 from an odd start,
-    // 11/12 (nearly diagonal) and 5/43 (long and flat), placed so no two share a pixel and
-    // each can be checked on its own.
-    const Ij base[][2] = {{{4, 1}, {40, 10}}, {{18, 13}, {46, 30}}, {{9, 33}, {29, 38}},
-                          {{2, 12}, {14, 23}}, {{2, 41}, {45, 46}}};
     const Color palette[] = {white, yellow, cyan, magenta, green};
     const char* words[] = {"",
                            "shallow, going right and down",
@@ -392,12 +400,218 @@ std::vector<Scene> make_scenes() {
     return all;
 }
 
-}  // namespace
+// ---- scene variants (grading): see "Scene variants" in checkpoints/README.md ----
 
-const std::vector<Scene>& scenes() {
+// FNV-1a, 64 bits: a hash of the scene id that every standard library computes alike.
+std::uint64_t fnv1a(std::string_view text) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (const char c : text) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
+
+class Rng {
+public:
+    explicit Rng(std::uint64_t seed) : gen_(seed) {}
+    // Uniform in [lo, hi] (lo when the range is empty). Written out, not with
+    // std::uniform_int_distribution, whose results differ between standard libraries.
+    int uniform(int lo, int hi) {
+        if (hi <= lo) return lo;
+        return lo + static_cast<int>(gen_() % static_cast<std::uint64_t>(hi - lo + 1));
+    }
+    bool coin() { return (gen_() >> 11) & 1; }
+
+private:
+    std::mt19937_64 gen_;
+};
+
+// A symmetry of the w x h image (transpose only when square), then an integer translation.
+// Each maps pixel centers to pixel centers; a mirror maps x to w - x exactly.
+struct Symmetry {
+    int w = 0, h = 0;
+    bool transpose = false, mirror_x = false, mirror_y = false;
+    int tx = 0, ty = 0;
+    Vec2 operator()(Vec2 p) const {
+        if (transpose) std::swap(p.x, p.y);
+        if (mirror_x) p.x = w - p.x;
+        if (mirror_y) p.y = h - p.y;
+        return {p.x + tx, p.y + ty};
+    }
+};
+
+Box map_box(const Box& b, const std::function<Vec2(Vec2)>& f) {
+    const Vec2 p = f({b.xmin, b.ymin}), q = f({b.xmax, b.ymax});
+    return {std::min(p.x, q.x), std::min(p.y, q.y), std::max(p.x, q.x), std::max(p.y, q.y)};
+}
+
+void map_points(Scene& s, const std::function<Vec2(Vec2)>& f) {
+    for (Segment& g : s.lines) {
+        g.a = f(g.a);
+        g.b = f(g.b);
+    }
+    s.viewport = map_box(s.viewport, f);
+}
+
+// Bright colors, distinct from the black background, from each other and from the clip
+// pictures' kUnclippedColor and kViewportColor.
+constexpr Color kVariantPalette[] = {white,          yellow,          cyan,           magenta,
+                                     green,          red,             {255, 150, 40}, {255, 120, 200},
+                                     {120, 170, 255}, {170, 255, 90}, {200, 130, 255}};
+
+// Gives the scene's distinct line colors new distinct colors (the same old color, the same new).
+void recolor(Scene& s, Rng& rng) {
+    std::vector<Color> pool(std::begin(kVariantPalette), std::end(kVariantPalette));
+    for (std::size_t i = pool.size(); i > 1; --i) std::swap(pool[i - 1], pool[std::size_t(rng.uniform(0, int(i) - 1))]);
+    std::vector<std::pair<Color, Color>> given;
+    for (Segment& g : s.lines) {
+        auto it = std::find_if(given.begin(), given.end(), [&](const auto& p) { return p.first == g.color; });
+        if (it == given.end()) {
+            if (given.size() == pool.size()) return;  // more colors than the palette: keep them
+            given.push_back({g.color, pool[given.size()]});
+            it = given.end() - 1;
+        }
+        g.color = it->second;
+    }
+}
+
+// The pixels a line may draw (Bresenham's, both pixels at a tie; Wu's, a wide band), for
+// checking that the lines of a `disjoint` scene still share no pixel after a variation.
+std::set<std::pair<int, int>> may_draw(const Segment& g) {
+    std::set<std::pair<int, int>> out;
+    Vec2 a = g.a, b = g.b;
+    if (!g.aa) {
+        a = {std::floor(a.x) + 0.5, std::floor(a.y) + 0.5};
+        b = {std::floor(b.x) + 0.5, std::floor(b.y) + 0.5};
+    }
+    const bool steep = std::abs(b.y - a.y) > std::abs(b.x - a.x);
+    if (steep) {
+        std::swap(a.x, a.y);
+        std::swap(b.x, b.y);
+    }
+    if (a.x > b.x) std::swap(a, b);
+    const double slope = b.x > a.x ? (b.y - a.y) / (b.x - a.x) : 0.0;
+    const double reach = g.aa ? 1.5 : 0.5;  // a tie is exactly 0.5 away
+    for (double c = std::floor(a.x) - 1; c <= std::floor(b.x) + 1; ++c) {
+        if (!g.aa && (c + 0.5 < a.x || c + 0.5 > b.x)) continue;
+        const double y = a.y + slope * (c + 0.5 - a.x);
+        for (double r = std::floor(y - reach) - 1; r <= std::floor(y + reach) + 1; ++r) {
+            if (std::abs(r + 0.5 - y) <= reach) out.insert(steep ? std::pair{int(r), int(c)} : std::pair{int(c), int(r)});
+        }
+    }
+    return out;
+}
+
+bool lines_disjoint(const Scene& s) {
+    std::set<std::pair<int, int>> taken;
+    for (const Segment& g : s.lines) {
+        auto near_image = [&](Vec2 p) { return p.x > -2 && p.y > -2 && p.x < s.width + 2 && p.y < s.height + 2; };
+        if (!near_image(g.a) || !near_image(g.b)) continue;  // clipped lines and non-finite ones
+        for (const auto& p : may_draw(g)) {
+            if (!taken.insert(p).second) return false;
+        }
+    }
+    return true;
+}
+
+// The octant scenes keep their structure (octant k is octant 1 mapped by the symmetry that
+// carries it there) with new octant-1 lines: each endpoint moved by up to 2 pixels, every
+// line still strictly shallow and going right and down, no two sharing a pixel, and at least
+// one line with exact ties.
+Scene octant_variant(int octant, Rng& rng) {
+    for (int attempt = 0; attempt < 200; ++attempt) {
+        Ij base[5][2];
+        bool ok = true, ties = false;
+        for (int k = 0; k < 5 && ok; ++k) {
+            for (int e = 0; e < 2; ++e) {
+                base[k][e] = {kOctantBase[k][e].i + rng.uniform(-2, 2), kOctantBase[k][e].j + rng.uniform(-2, 2)};
+                ok &= base[k][e].i >= 0 && base[k][e].i <= 47 && base[k][e].j >= 0 && base[k][e].j <= 47;
+            }
+            const int dx = base[k][1].i - base[k][0].i, dy = base[k][1].j - base[k][0].j;
+            ok &= dx > dy && dy > 0;
+            for (int i = 1; i < dx; ++i) ties |= 2 * ((dy * i) % dx) == dx;
+        }
+        if (!ok || !ties) continue;
+        Scene s = octant_scene(1, base);
+        if (lines_disjoint(s)) return octant_scene(octant, base);
+    }
+    return octant_scene(octant);
+}
+
+Scene vary(const Scene& pub, Rng& rng) {
+    const std::string& id = pub.id;
+    auto is = [&](std::initializer_list<const char*> names) {
+        return std::any_of(names.begin(), names.end(), [&](const char* n) { return id == n; });
+    };
+    Scene s = pub;
+    if (id.rfind("m1.octant_", 0) == 0) {
+        s = octant_variant(id.back() - '0', rng);
+        recolor(s, rng);
+        return s;
+    }
+    if (id == "m1.outcodes") {  // sides move by whole pixels, so they still pass through centers
+        s.viewport = {s.viewport.xmin + rng.uniform(-6, 6), s.viewport.ymin + rng.uniform(-6, 6),
+                      s.viewport.xmax + rng.uniform(-6, 6), s.viewport.ymax + rng.uniform(-6, 6)};
+    }
+    if (s.kind == Kind::kClip) {
+        // Each axis scaled by 13/16..1 and shifted within the image: an affine map keeps
+        // every segment's relation to the viewport (inside, outside, missing a corner,
+        // crossing one or two edges) while moving and resizing the viewport and the slopes.
+        const double sx = 1 - rng.uniform(0, 6) / 32.0, sy = 1 - rng.uniform(0, 6) / 32.0;
+        const double bx = rng.uniform(0, int(s.width * (1 - sx) * 4)) / 4.0;
+        const double by = rng.uniform(0, int(s.height * (1 - sy) * 4)) / 4.0;
+        map_points(s, [&](Vec2 p) { return Vec2{sx * p.x + bx, sy * p.y + by}; });
+    }
+    Symmetry sym;
+    sym.w = s.width;
+    sym.h = s.height;
+    // Shallow and steep Wu scenes stay shallow and steep.
+    sym.transpose = s.width == s.height && !is({"m1.aa_shallow", "m1.aa_steep"}) && rng.coin();
+    sym.mirror_x = rng.coin();
+    sym.mirror_y = rng.coin();
+    if (id == "m1.extreme_huge") {
+        // Its far lines test computing from the endpoint nearer the image. An implementation
+        // that always computes from a (or from the left end) passes some mirror images of a
+        // line from 1e300 by luck, and in others its misplaced line crosses the ordinary
+        // lines, which hides the precision diagnosis: only the colors vary.
+        sym.transpose = sym.mirror_x = sym.mirror_y = false;
+    }
+    if (is({"m1.axis_aligned", "m1.diagonals", "m1.endpoints", "m1.symmetry", "m1.aa_shallow", "m1.aa_steep",
+            "m1.aa_diagonal"})) {
+        // Nothing here touches the image border: move by up to 3 pixels, staying 1 pixel inside.
+        double x0 = s.width, y0 = s.height, x1 = 0, y1 = 0;
+        for (const Segment& g : s.lines) {
+            for (const Vec2 p : {sym(g.a), sym(g.b)}) {
+                x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+            }
+        }
+        sym.tx = rng.uniform(std::max(-3, 1 - int(std::floor(x0))), std::min(3, s.width - 1 - int(std::ceil(x1))));
+        sym.ty = rng.uniform(std::max(-3, 1 - int(std::floor(y0))), std::min(3, s.height - 1 - int(std::ceil(y1))));
+    }
+    Scene mapped = s;
+    map_points(mapped, sym);
+    recolor(mapped, rng);
+    // A mirrored endpoint on a pixel's edge lands in the neighbouring pixel: if that makes two
+    // lines of a disjoint scene touch, keep the scene unmirrored (still recolored).
+    if (mapped.disjoint && !lines_disjoint(mapped)) {
+        recolor(s, rng);
+        return s;
+    }
+    return mapped;
+}
+
+const std::vector<Scene>& public_scenes() {
     static const std::vector<Scene> all = make_scenes();
     return all;
 }
+
+std::uint64_t current_seed = 0;
+std::vector<Scene> varied;
+
+}  // namespace
+
+const std::vector<Scene>& scenes() { return current_seed == 0 ? public_scenes() : varied; }
 
 const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
 
@@ -418,7 +632,15 @@ Color outcode_color(int code) {
 }
 
 void use_variant(std::uint64_t seed) {
-    (void)seed;  // TODO(grading): variants
+    if (seed == current_seed) return;
+    current_seed = 0;
+    varied.clear();
+    if (seed == 0) return;
+    for (const Scene& s : public_scenes()) {
+        Rng rng(seed ^ fnv1a(s.id));
+        varied.push_back(vary(s, rng));
+    }
+    current_seed = seed;
 }
 
 }  // namespace m1cp
