@@ -40,6 +40,10 @@ if(CMAKE_SCRIPT_MODE_FILE)
   return()
 endif()
 
+if(RASTER_HANDOUT)  # a student's handout has no reference source, bugs or correct variants
+  return()
+endif()
+
 set(RASTER_VARIANT_SEEDS 1 2 3 CACHE STRING "Scene seeds the project's variant tests run")
 set(raster_variant_milestones m1)
 
