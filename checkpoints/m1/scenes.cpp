@@ -1,14 +1,13 @@
 #include "m1/scenes.h"
 
 #include "harness/checkpoint.h"
+#include "variant_random.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
-#include <random>
 #include <set>
-#include <string_view>
 #include <utility>
 #include <limits>
 #include <numbers>
@@ -402,30 +401,7 @@ std::vector<Scene> make_scenes() {
 
 // ---- scene variants (grading): see "Scene variants" in checkpoints/README.md ----
 
-// FNV-1a, 64 bits: a hash of the scene id that every standard library computes alike.
-std::uint64_t fnv1a(std::string_view text) {
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    for (const char c : text) {
-        h ^= static_cast<unsigned char>(c);
-        h *= 0x100000001b3ull;
-    }
-    return h;
-}
-
-class Rng {
-public:
-    explicit Rng(std::uint64_t seed) : gen_(seed) {}
-    // Uniform in [lo, hi] (lo when the range is empty). Written out, not with
-    // std::uniform_int_distribution, whose results differ between standard libraries.
-    int uniform(int lo, int hi) {
-        if (hi <= lo) return lo;
-        return lo + static_cast<int>(gen_() % static_cast<std::uint64_t>(hi - lo + 1));
-    }
-    bool coin() { return (gen_() >> 11) & 1; }
-
-private:
-    std::mt19937_64 gen_;
-};
+using Rng = cp::VariantRng;
 
 // A symmetry of the w x h image (transpose only when square), then an integer translation.
 // Each maps pixel centers to pixel centers; a mirror maps x to w - x exactly.
@@ -463,7 +439,7 @@ constexpr Color kVariantPalette[] = {white,          yellow,          cyan,     
 // Gives the scene's distinct line colors new distinct colors (the same old color, the same new).
 void recolor(Scene& s, Rng& rng) {
     std::vector<Color> pool(std::begin(kVariantPalette), std::end(kVariantPalette));
-    for (std::size_t i = pool.size(); i > 1; --i) std::swap(pool[i - 1], pool[std::size_t(rng.uniform(0, int(i) - 1))]);
+    rng.shuffle(pool);
     std::vector<std::pair<Color, Color>> given;
     for (Segment& g : s.lines) {
         auto it = std::find_if(given.begin(), given.end(), [&](const auto& p) { return p.first == g.color; });
@@ -637,7 +613,7 @@ void use_variant(std::uint64_t seed) {
     varied.clear();
     if (seed == 0) return;
     for (const Scene& s : public_scenes()) {
-        Rng rng(seed ^ fnv1a(s.id));
+        Rng rng(seed, s.id);
         varied.push_back(vary(s, rng));
     }
     current_seed = seed;

@@ -1,7 +1,9 @@
 #include "m2/scenes.h"
 
 #include "harness/checkpoint.h"
+#include "variant_random.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -313,17 +315,136 @@ std::vector<Scene> make_scenes() {
     return all;
 }
 
-}  // namespace
+// ---- scene variants (grading): see "Scene variants (grading)" in checkpoints/README.md ----
 
-const std::vector<Scene>& scenes() {
+using Rng = cp::VariantRng;
+
+// A symmetry of the w x h image (transpose only when square), then an integer translation.
+// Each maps pixel centers to pixel centers, the 1/16 grid to itself and the sample grid of
+// fill_triangle_aa to itself (a mirror maps x to w - x exactly).
+struct Symmetry {
+    int w = 0, h = 0;
+    bool transpose = false, mirror_x = false, mirror_y = false;
+    int tx = 0, ty = 0;
+    Vec2 operator()(Vec2 p) const {
+        if (transpose) std::swap(p.x, p.y);
+        if (mirror_x) p.x = w - p.x;
+        if (mirror_y) p.y = h - p.y;
+        return {p.x + tx, p.y + ty};
+    }
+};
+
+bool near_image(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::abs(p.x) < 1e4 && std::abs(p.y) < 1e4; }
+
+// The scene's colors from kPalette permuted among themselves, and each gradient's three vertex
+// colors permuted: distinct colors stay distinct, and the gray backdrops, white and red stay.
+void recolor(Scene& s, Rng& rng) {
+    std::vector<int> perm{0, 1, 2, 3, 4, 5, 6, 7};
+    rng.shuffle(perm);
+    for (Tri& t : s.tris) {
+        for (Color& c : t.c) {
+            for (int k = 0; k < 8; ++k) {
+                if (c == kPalette[k]) {
+                    c = kPalette[perm[std::size_t(k)]];
+                    break;
+                }
+            }
+        }
+        if (t.gradient) {
+            std::vector<Color> cs{t.c[0], t.c[1], t.c[2]};
+            rng.shuffle(cs);
+            for (int i = 0; i < 3; ++i) t.c[i] = cs[std::size_t(i)];
+        }
+    }
+}
+
+Scene vary(const Scene& pub, Rng& rng) {
+    Scene s = pub;
+    const std::string& id = s.id;
+    if (id == "m2.fan") {
+        // A new center (up to a pixel away, on the 1/16 grid) and a new phase: still a fan
+        // of triangles sharing every inner edge, inside the image.
+        const Tri& first = pub.tris.front();
+        const Vec2 c0 = first.v[0];
+        const double r = raster::length(first.v[1] - c0);
+        const Vec2 c{c0.x + rng.uniform(-16, 16) / 16.0, c0.y + rng.uniform(-16, 16) / 16.0};
+        const double phase = rng.uniform(0, 999) * (2 * std::numbers::pi / 1000);
+        // Built here, not with fan(): the last outer vertex is the first one exactly (the
+        // angle phase + 2 pi is not phase in floating point), so the fan closes.
+        const int n = int(pub.tris.size());
+        auto at = [&](int k) {
+            const double a = phase + 2 * std::numbers::pi * (k % n) / n;
+            return Vec2{c.x + r * std::cos(a), c.y + r * std::sin(a)};
+        };
+        s.tris.clear();
+        for (int k = 0; k < n; ++k) s.tris.push_back(solid(c, at(k), at(k + 1), kPalette[k % 8]));
+    }
+    if (id == "m2.edge_and_box") {
+        // Move the snapped points by whole units (their fractions, which decide the rounding, stay).
+        for (Vec2& p : s.numbers.snaps) {
+            if (near_image(p)) p = {p.x + rng.uniform(-40, 40), p.y + rng.uniform(-40, 40)};
+        }
+    }
+    Symmetry sym;
+    sym.w = s.width;
+    sym.h = s.height;
+    sym.transpose = s.width == s.height && rng.coin();
+    sym.mirror_x = rng.coin();
+    sym.mirror_y = rng.coin();
+    if (id == "m2.huge") {
+        // Without its box clamped, the first triangle's loop must run into the stray-write
+        // budget (a "runaway loop"); in some mirror images it walks empty rows first and the
+        // watchdog stops it instead, naming another concept: only the colors vary.
+        sym.transpose = sym.mirror_x = sym.mirror_y = false;
+    }
+    if (id != "m2.huge" && id != "m2.edge_and_box") {
+        // Up to 3 whole pixels, keeping every vertex near the image inside it.
+        double x0 = s.width, y0 = s.height, x1 = 0, y1 = 0;
+        for (const Tri& t : s.tris) {
+            for (const Vec2& v : t.v) {
+                if (!near_image(v)) continue;
+                const Vec2 p = sym(v);
+                x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+            }
+        }
+        sym.tx = rng.uniform(std::max(-3, -int(std::floor(x0))), std::min(3, s.width - int(std::ceil(x1))));
+        sym.ty = rng.uniform(std::max(-3, -int(std::floor(y0))), std::min(3, s.height - int(std::ceil(y1))));
+    }
+    for (Tri& t : s.tris) {
+        for (Vec2& v : t.v) v = sym(v);
+    }
+    for (Vec2& p : s.numbers.snaps) p = sym(p);
+    for (auto& box : s.numbers.boxes) {
+        for (Vec2& v : box) v = sym(v);
+    }
+    recolor(s, rng);
+    return s;
+}
+
+const std::vector<Scene>& public_scenes() {
     static const std::vector<Scene> all = make_scenes();
     return all;
 }
 
+std::uint64_t current_seed = 0;
+std::vector<Scene> varied;
+
+}  // namespace
+
+const std::vector<Scene>& scenes() { return current_seed == 0 ? public_scenes() : varied; }
+
 const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
 
 void use_variant(std::uint64_t seed) {
-    (void)seed;  // TODO(grading): variants
+    if (seed == current_seed) return;
+    current_seed = 0;
+    varied.clear();
+    if (seed == 0) return;
+    for (const Scene& s : public_scenes()) {
+        Rng rng(seed, s.id);
+        varied.push_back(vary(s, rng));
+    }
+    current_seed = seed;
 }
 
 }  // namespace m2cp

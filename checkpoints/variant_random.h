@@ -1,0 +1,43 @@
+// Scene variants (grading): the random numbers every milestone's use_variant() draws from.
+// Deterministic on every platform: FNV-1a for the scene id (std::hash differs between standard
+// libraries), std::mt19937_64 (its sequence is fixed by the standard), and integers drawn by
+// hand (std::uniform_int_distribution's results differ between standard libraries).
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace cp {
+
+inline std::uint64_t fnv1a(std::string_view text) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (const char c : text) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
+
+class VariantRng {
+public:
+    // The generator of one scene's variant: seeded with seed XOR fnv1a(scene id).
+    VariantRng(std::uint64_t seed, std::string_view id) : gen_(seed ^ fnv1a(id)) {}
+    // Uniform in [lo, hi] (lo when the range is empty); the modulo bias is irrelevant here.
+    int uniform(int lo, int hi) {
+        if (hi <= lo) return lo;
+        return lo + static_cast<int>(gen_() % static_cast<std::uint64_t>(hi - lo + 1));
+    }
+    bool coin() { return (gen_() >> 11) & 1; }
+    template <typename T>
+    void shuffle(std::vector<T>& v) {
+        for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[std::size_t(uniform(0, int(i) - 1))]);
+    }
+
+private:
+    std::mt19937_64 gen_;
+};
+
+}  // namespace cp
