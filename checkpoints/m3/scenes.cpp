@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "harness/checkpoint.h"
+#include "variant_random.h"
 #include "raster/mesh.h"
 
 namespace m3cp {
@@ -365,7 +366,7 @@ Mesh obj_mesh(const std::string& name, bool colored) {
 
 Mesh soccer_ball_mesh() { return obj_mesh("soccer_ball", true); }
 
-Matrix near_singular_matrix() {
+static Matrix public_near_singular_matrix(const double (&angles)[6]) {
     // Q1 * diag(1e6, 1, 1, 1e-6) * Q2 with 4D rotations Q1, Q2 (Givens rotations in several
     // planes), so every entry is mixed and the condition number is 1e12.
     auto givens = [](int i, int j, double a) {
@@ -389,12 +390,12 @@ Matrix near_singular_matrix() {
     d[0][0] = 1e6;
     d[1][1] = d[2][2] = 1;
     d[3][3] = 1e-6;
-    const Matrix q1 = mul(mul(givens(0, 3, 0.7), givens(1, 2, 0.4)), givens(0, 1, 1.1));
-    const Matrix q2 = mul(mul(givens(2, 3, 0.9), givens(0, 2, -0.6)), givens(1, 3, 0.3));
+    const Matrix q1 = mul(mul(givens(0, 3, angles[0]), givens(1, 2, angles[1])), givens(0, 1, angles[2]));
+    const Matrix q2 = mul(mul(givens(2, 3, angles[3]), givens(0, 2, angles[4])), givens(1, 3, angles[5]));
     return mul(mul(q1, d), q2);
 }
 
-std::vector<std::array<Vec4, 3>> clip_cases() {
+static std::vector<std::array<Vec4, 3>> public_clip_cases() {
     return {
         // inside: unchanged
         {{{0.1, 0.2, 0.3, 1}, {0.6, -0.1, 0.2, 1}, {-0.2, 0.5, -0.4, 1}}},
@@ -413,7 +414,7 @@ std::vector<std::array<Vec4, 3>> clip_cases() {
     };
 }
 
-std::vector<std::array<Vec4, 2>> clip_line_cases() {
+static std::vector<std::array<Vec4, 2>> public_clip_line_cases() {
     return {
         {{{0.1, 0.2, 0.3, 1}, {-0.4, 0.5, 0.1, 1}}},     // inside
         {{{0.2, 0.1, 0.0, 1}, {2.4, 0.3, 0.1, 1.1}}},    // leaves through the right plane
@@ -424,15 +425,127 @@ std::vector<std::array<Vec4, 2>> clip_line_cases() {
     };
 }
 
-const std::vector<Scene>& scenes() {
+// ---- scene variants (grading): see "Scene variants (grading)" in checkpoints/README.md ----
+
+namespace {
+
+using Rng = cp::VariantRng;
+
+std::uint64_t current_seed = 0;
+std::vector<Scene> varied;
+
+constexpr double kPublicSingularAngles[6] = {0.7, 0.4, 1.1, 0.9, -0.6, 0.3};
+
+// x + d with d a whole number of hundredths in [-n, n] / 100.
+double jitter(Rng& rng, double x, int n) { return x + rng.uniform(-n, n) / 100.0; }
+
+// The scene's face colors from kPalette permuted among themselves (distinct stay distinct).
+void recolor(Scene& s, Rng& rng) {
+    std::vector<int> perm{0, 1, 2, 3, 4, 5, 6, 7};
+    rng.shuffle(perm);
+    for (Panel& p : s.panels) {
+        for (Item& it : p.items) {
+            for (Color& c : it.mesh.face_colors) {
+                for (int k = 0; k < 8; ++k) {
+                    if (c == kPalette[k]) {
+                        c = kPalette[perm[std::size_t(k)]];
+                        break;
+                    }
+                }
+            }
+        }
+    }
+}
+
+Scene vary(const Scene& pub, Rng& rng) {
+    Scene s = pub;
+    const std::string& id = s.id;
+    auto is = [&](std::initializer_list<const char*> names) {
+        return std::any_of(names.begin(), names.end(), [&](const char* n) { return id == n; });
+    };
+    // Models turned by up to 0.2 rad more about their axis.
+    if (is({"m3.wireframe_cube", "m3.soccer_ball", "m3.solid_cube", "m3.persp_ortho", "m3.orbit", "m3.models",
+            "m3.fov_extremes", "m3.near_far_extreme", "m3.far_model"})) {
+        for (Panel& p : s.panels) {
+            for (Item& it : p.items) it.angle = jitter(rng, it.angle, 20);
+        }
+    }
+    // The camera moved by up to 0.15 per coordinate (the same move for panels that show one
+    // scene side by side).
+    if (is({"m3.wireframe_cube", "m3.soccer_ball", "m3.solid_cube", "m3.persp_ortho", "m3.orbit", "m3.models",
+            "m3.near_far_extreme", "m3.far_model", "m3.painter"})) {
+        const Vec3 d{rng.uniform(-15, 15) / 100.0, rng.uniform(-15, 15) / 100.0, rng.uniform(-15, 15) / 100.0};
+        for (Panel& p : s.panels) p.camera.eye = p.camera.eye + d;
+    }
+    // Triangles at the camera: x and y of every vertex move by up to 5%, z stays, so the vertex
+    // in the camera's plane (w = 0) stays there and the one behind it stays behind.
+    if (is({"m3.behind_camera", "m3.near_crossing"})) {
+        for (Panel& p : s.panels) {
+            for (Item& it : p.items) {
+                for (Vec3& v : it.mesh.positions) {
+                    v.x *= 1 + rng.uniform(-5, 5) / 100.0;
+                    v.y *= 1 + rng.uniform(-5, 5) / 100.0;
+                }
+            }
+        }
+    }
+    if (id != "m3.painter_fails") recolor(s, rng);  // its hint names the blue triangle
+    return s;
+}
+
+const std::vector<Scene>& public_scenes() {
     static const std::vector<Scene> all = build();
     return all;
 }
 
+}  // namespace
+
+Matrix near_singular_matrix() {
+    if (current_seed == 0) return public_near_singular_matrix(kPublicSingularAngles);
+    // Other Givens angles (up to 0.25 rad away): still every entry mixed, condition number 1e12.
+    Rng rng(current_seed, "m3.near_singular");
+    double angles[6];
+    for (int k = 0; k < 6; ++k) angles[k] = jitter(rng, kPublicSingularAngles[k], 25);
+    return public_near_singular_matrix(angles);
+}
+
+// Each clip-space vertex multiplied by its own positive factor (0.5..2): the same point of
+// projective space, so every case keeps its relation to the six planes (w = 0 stays 0, w < 0
+// stays negative), while every number changes.
+std::vector<std::array<Vec4, 3>> clip_cases() {
+    auto cases = public_clip_cases();
+    if (current_seed == 0) return cases;
+    Rng rng(current_seed, "m3.clip_numbers.polygons");
+    for (auto& c : cases) {
+        for (Vec4& v : c) v = v * (rng.uniform(50, 200) / 100.0);
+    }
+    return cases;
+}
+
+std::vector<std::array<Vec4, 2>> clip_line_cases() {
+    auto cases = public_clip_line_cases();
+    if (current_seed == 0) return cases;
+    Rng rng(current_seed, "m3.clip_numbers.lines");
+    for (auto& c : cases) {
+        for (Vec4& v : c) v = v * (rng.uniform(50, 200) / 100.0);
+    }
+    return cases;
+}
+
+const std::vector<Scene>& scenes() { return current_seed == 0 ? public_scenes() : varied; }
+
 const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
 
 void use_variant(std::uint64_t seed) {
-    (void)seed;  // TODO(grading): variants
+    if (seed == current_seed) return;
+    current_seed = 0;
+    varied.clear();
+    if (seed == 0) return;
+    for (const Scene& s : public_scenes()) {
+        Rng rng(seed, s.id);
+        varied.push_back(vary(s, rng));
+    }
+    current_seed = seed;
 }
 
 }  // namespace m3cp
