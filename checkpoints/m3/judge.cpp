@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 #include "m3/render.h"
@@ -538,6 +539,25 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
     }
 }
 
+// The probes of a scene variant (render.cpp, probes()): "probe.<topic>.<name>[.<component>]",
+// each compared with the reference's on the same inputs; one finding per name.
+void judge_probes(Ctx& c) {
+    std::set<std::string> reported;
+    for (const auto& [key, ref] : c.ref) {
+        if (key.rfind("probe.", 0) != 0) continue;
+        const auto topic_end = key.find('.', 6);
+        if (topic_end == std::string::npos) continue;
+        const auto name_end = key.find('.', topic_end + 1);
+        const std::string name = key.substr(0, name_end);
+        if (reported.count(name) || close(get(c.mine, key), ref)) continue;
+        reported.insert(name);
+        const std::string topic = key.substr(6, topic_end - 6);
+        c.add(topic, "on inputs drawn for this grading (not the lesson's), " + name.substr(topic_end + 1) + " gave " +
+                         num(get(c.mine, key)) + " where the reference gives " + num(ref) + " (" + key.substr(6) +
+                         "): the function must work for any input, not only the public ones");
+    }
+}
+
 }  // namespace
 
 cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const cp::Artifacts& reference,
@@ -551,6 +571,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
                           "clip to the image, so this comes from your own code");
     }
     for (Group g : s.groups) judge_group(g, c);
+    judge_probes(c);
     if (!s.panels.empty()) judge_picture(c, artifacts);
     return j;
 }

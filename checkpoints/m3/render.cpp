@@ -7,6 +7,7 @@
 
 #include "m3/scenes.h"
 #include "transforms.h"
+#include "variant_random.h"
 
 namespace m3cp {
 namespace RASTER_FLAVOUR {
@@ -186,6 +187,100 @@ void numbers(Group g, Values& v) {
     }
 }
 
+// Under a scene variant (grading), each number checkpoint also calls its functions on inputs
+// drawn from the variant's seed, stored as "probe.<topic>.<name>": the public inputs and their
+// hand-worked answers stay, and an implementation that only knows those answers fails here.
+// The judge compares every probe with the reference's.
+void probes(Group g, Values& v) {
+    cp::VariantRng rng(variant_seed(), "m3.probe." + std::to_string(static_cast<int>(g)));
+    auto r = [&](int lo, int hi) { return rng.uniform(lo * 100, hi * 100) / 100.0; };  // hundredths
+    auto vec = [&](int lo, int hi) { return Vec3{r(lo, hi), r(lo, hi), r(lo, hi)}; };
+    auto affine = [&] {
+        Mat4 m = m3::identity();
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 4; ++j) m.m[i][j] = r(-3, 3);
+        }
+        for (int i = 0; i < 3; ++i) m.m[i][i] += 4;  // diagonally dominant: well conditioned
+        return m;
+    };
+    switch (g) {
+        case Group::kMatrixOps: {
+            const Mat4 a = affine(), b = affine();
+            const Vec3 p = vec(-5, 5);
+            put(v, "probe.matrix.ab", mul(a, b));
+            put(v, "probe.matrix.at", CALL("transpose", m3::transpose(a)));
+            put(v, "probe.matrix.av", mul(a, Vec4{p.x, p.y, p.z, 1}));
+            put(v, "probe.matrix.pt", CALL("transform_point", m3::transform_point(a, p)));
+            put(v, "probe.direction.dir", CALL("transform_direction", m3::transform_direction(a, p)));
+            break;
+        }
+        case Group::kBuilders:
+            put(v, "probe.builders.translate", CALL("translate", m3::translate(vec(-5, 5))));
+            put(v, "probe.builders.scale", CALL("scale", m3::scale(vec(1, 4))));
+            put(v, "probe.builders.rx", CALL("rotate_x", m3::rotate_x(r(-3, 3))));
+            put(v, "probe.builders.ry", CALL("rotate_y", m3::rotate_y(r(-3, 3))));
+            put(v, "probe.builders.rz", CALL("rotate_z", m3::rotate_z(r(-3, 3))));
+            break;
+        case Group::kRodrigues:
+            put(v, "probe.rotation.r", CALL("rotate", m3::rotate(vec(1, 3), r(-3, 3))));
+            put(v, "probe.rotation.neg", CALL("rotate", m3::rotate(vec(-3, -1), r(-3, 3))));
+            break;
+        case Group::kComposition: {
+            const Mat4 t = CALL("translate", m3::translate(vec(-4, 4)));
+            const Mat4 rz = CALL("rotate_z", m3::rotate_z(r(-3, 3)));
+            const Mat4 sc = CALL("scale", m3::scale(vec(1, 3)));
+            put(v, "probe.composition.trs", CALL("transform_point", m3::transform_point(mul(mul(t, rz), sc), vec(-2, 2))));
+            break;
+        }
+        case Group::kInverse: {
+            Mat4 out;
+            v["probe.inverse.ok"] = CALL("inverse", m3::inverse(affine(), out));
+            put(v, "probe.inverse.m", out);
+            const Mat4 rigid = mul(CALL("translate", m3::translate(vec(-4, 4))), CALL("rotate", m3::rotate(vec(1, 3), r(-3, 3))));
+            put(v, "probe.inverse.rigid", CALL("rigid_inverse", m3::rigid_inverse(rigid)));
+            break;
+        }
+        case Group::kLookAt: {
+            const Vec3 eye = vec(-6, 6);
+            const Vec3 target{eye.x + r(1, 3), eye.y + r(-2, 2), eye.z - r(1, 3)};
+            put(v, "probe.look at.m", CALL("look_at", m3::look_at(eye, target, {r(-1, 1) / 4, 1, r(-1, 1) / 4})));
+            break;
+        }
+        case Group::kProjection: {
+            const double n = r(1, 2) / 4, f = r(20, 90);
+            put(v, "probe.projection.persp", CALL("perspective", m3::perspective(r(20, 120), r(1, 2), n, f)));
+            put(v, "probe.projection.ortho", CALL("orthographic", m3::orthographic(-r(1, 4), r(1, 4), -r(1, 3), r(1, 3), n, f)));
+            put(v, "probe.viewport.s", CALL("to_screen", m3::to_screen({r(-1, 1), r(-1, 1), r(-1, 1) / 2, r(1, 3)}, 64 + rng.uniform(0, 64), 48 + rng.uniform(0, 64))));
+            break;
+        }
+        case Group::kCulling: {
+            const Vec3 a{r(0, 60), r(0, 60), 0}, b{r(0, 60), r(0, 60), 0}, c{r(0, 60), r(0, 60), 0};
+            v["probe.culling.abc"] = CALL("is_back_facing", m3::is_back_facing(a, b, c));
+            v["probe.culling.acb"] = CALL("is_back_facing", m3::is_back_facing(a, c, b));
+            break;
+        }
+        case Group::kBezier:
+            put(v, "probe.bezier.p", CALL("bezier", m3::bezier(vec(-3, 3), vec(-3, 3), vec(-3, 3), vec(-3, 3), r(0, 1))));
+            break;
+        case Group::kPainter: {
+            std::vector<std::array<Vec3, 3>> tris;
+            for (int k = 0; k < 6; ++k) {
+                const double z = -0.5 - 1.5 * k;  // distinct means, in shuffled order
+                tris.push_back({{{0, 0, z - 0.25}, {1, 0, z}, {0, 1, z + 0.25}}});
+            }
+            rng.shuffle(tris);
+            const std::vector<int> order = CALL("painter_order", m3::painter_order(tris));
+            v["probe.painter.n"] = static_cast<double>(order.size());
+            for (std::size_t k = 0; k < order.size() && k < 16; ++k) v["probe.painter." + std::to_string(k)] = order[k];
+            break;
+        }
+        case Group::kNearSingular:
+        case Group::kClip:
+        case Group::kRotationDrift:
+            break;  // their public inputs already vary (scenes.cpp), or need none
+    }
+}
+
 void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
     m3::Stats total;
     for (std::size_t p = 0; p < s.panels.size(); ++p) {
@@ -241,7 +336,10 @@ cp::Artifacts render(const std::string& id) {
     const Scene& s = scene(id);
     return cp::render_guarded(s.width, s.height, [&](raster::Image& img, cp::Artifacts& out) {
         g_out = &out;
-        for (Group g : s.groups) numbers(g, out.values);
+        for (Group g : s.groups) {
+            numbers(g, out.values);
+            if (variant_seed() != 0) probes(g, out.values);
+        }
         if (!s.panels.empty()) draw_panels(s, img, out);
     });
 }

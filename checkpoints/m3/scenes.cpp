@@ -534,6 +534,8 @@ std::vector<std::array<Vec4, 2>> clip_line_cases() {
 
 const std::vector<Scene>& scenes() { return current_seed == 0 ? public_scenes() : varied; }
 
+std::uint64_t variant_seed() { return current_seed; }
+
 const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
 
 void use_variant(std::uint64_t seed) {

@@ -73,6 +73,9 @@ const std::vector<Scene>& scenes();
 // Grading's scene variants: replaces every scene by a variant derived from (seed, scene id);
 // seed 0 restores the public scenes. scenes() and scene() return the current ones.
 void use_variant(std::uint64_t seed);
+// The seed of the current variant (0: the public scenes). The number checkpoints add "probe"
+// inputs drawn from it (render.cpp), which the judge compares with the reference's results.
+std::uint64_t variant_seed();
 const Scene& scene(const std::string& id);
 
 // Shapes shared with the demo and the tools.

@@ -251,6 +251,22 @@ CPP
       [ "$(score "$work/seed$s/results.json")" = 0 ] || fail "the memorizing submission scored on the variant of seed $s"
     done
     ;;
+  memorize_numbers)
+    # The same for a number checkpoint: translate() right only for the lesson's own input. The
+    # graded variant adds inputs drawn from the seed (probes), so it loses m3.builders there.
+    sed 's/^Mat4 translate(Vec3 t) {/Mat4 translate(Vec3 t) {\n    if (!(t.x == 1 \&\& t.y == -2 \&\& t.z == 3)) return identity();/' \
+      "$root/solutions/milestone3_transforms/transforms.cpp" >"$work/transforms.cpp"
+    grep -q 't.x == 1' "$work/transforms.cpp" || fail "could not change translate() in the solution"
+    make_submission "$work/sub" "" "" "$work/transforms.cpp"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/public" --public --milestones m3 \
+      --only m3.builders "$work/sub" >"$work/log" 2>&1 || { cat "$work/log"; fail "grading failed"; }
+    [ "$(score "$work/public/results.json")" = "$(max_score "$work/public/results.json")" ] ||
+      fail "the memorizing translate() should pass the public m3.builders (the test's own premise)"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/seed" --seed 3 --milestones m3 \
+      --only m3.builders "$work/sub" >"$work/log" 2>&1 || { cat "$work/log"; fail "grading failed"; }
+    [ "$(score "$work/seed/results.json")" = 0 ] || fail "the memorizing translate() scored on a variant"
+    grep -q "inputs drawn for this grading" "$work/seed/results.json" || fail "the finding does not say why"
+    ;;
   *) fail "unknown case" ;;
 esac
 check_clean
