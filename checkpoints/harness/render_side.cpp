@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iomanip>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 #include "harness/checkpoint.h"
@@ -162,6 +163,12 @@ raster::Image guarded_image(int width, int height) {
 }
 
 void save_artifacts(const std::string& dir, const Artifacts& a) {
+    // values.txt is "key name number" per line: a name with white space would be misread.
+    for (const auto& [name, v] : a.values) {
+        if (name.empty() || name.find_first_of(" \t\n\r") != std::string::npos) {
+            throw std::logic_error("value name '" + name + "' is empty or holds white space");
+        }
+    }
     fs::create_directories(dir);
     for (const auto& [name, img] : a.images) raster::write_png((fs::path(dir) / (name + ".png")).string(), img);
     std::ofstream out(fs::path(dir) / "values.txt");

@@ -551,7 +551,8 @@ void judge_probes(Ctx& c) {
         const std::string name = key.substr(0, name_end);
         if (reported.count(name) || close(get(c.mine, key), ref)) continue;
         reported.insert(name);
-        const std::string topic = key.substr(6, topic_end - 6);
+        std::string topic = key.substr(6, topic_end - 6);  // value names hold no spaces: look_at
+        std::replace(topic.begin(), topic.end(), '_', ' ');
         c.add(topic, "on inputs drawn for this grading (not the lesson's), " + name.substr(topic_end + 1) + " gave " +
                          num(get(c.mine, key)) + " where the reference gives " + num(ref) + " (" + key.substr(6) +
                          "): the function must work for any input, not only the public ones");

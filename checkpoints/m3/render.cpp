@@ -243,7 +243,7 @@ void probes(Group g, Values& v) {
         case Group::kLookAt: {
             const Vec3 eye = vec(-6, 6);
             const Vec3 target{eye.x + r(1, 3), eye.y + r(-2, 2), eye.z - r(1, 3)};
-            put(v, "probe.look at.m", CALL("look_at", m3::look_at(eye, target, {r(-1, 1) / 4, 1, r(-1, 1) / 4})));
+            put(v, "probe.look_at.m", CALL("look_at", m3::look_at(eye, target, {r(-1, 1) / 4, 1, r(-1, 1) / 4})));
             break;
         }
         case Group::kProjection: {
