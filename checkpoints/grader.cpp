@@ -445,7 +445,7 @@ int cmd_report(const std::vector<std::string>& args) {
             per_milestone[m].first += got;
             per_milestone[m].second += max;
             std::string output = checkpoint_output(v, why);
-            if (!compiled) output = "compile error (the compile log is in the milestone's own test)\n" + output;
+            if (!compiled) output = "compile error: the compiler's output is in the test \"" + m + " compiles\"\n" + output;
             const bool hidden = visibility == "after_published";
             tests.push_back({{"name", m + " " + cname},
                              {"score", got},
