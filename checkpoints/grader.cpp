@@ -406,7 +406,8 @@ int cmd_report(const std::vector<std::string>& args) {
     json tests = json::array();
     double score = 0, total = 0;
     std::ostringstream html, rows, sections;
-    std::map<std::string, std::pair<double, double>> per_milestone;  // earned, max
+    std::map<std::string, std::pair<double, double>> per_milestone;  // earned, max (visible only)
+    int hidden_count = 0;
     for (const auto& [m, r] : rubric) {
         const fs::path mdir = dir / m;
         if (!fs::is_directory(mdir)) continue;
@@ -442,11 +443,16 @@ int cmd_report(const std::vector<std::string>& args) {
             const double got = earned(r, max, v, why);
             score += got;
             total += max;
-            per_milestone[m].first += got;
-            per_milestone[m].second += max;
+            const bool is_hidden = visibility == "after_published";
+            if (is_hidden) {
+                hidden_count += 1;
+            } else {  // the visible summary says nothing about hidden checkpoints
+                per_milestone[m].first += got;
+                per_milestone[m].second += max;
+            }
             std::string output = checkpoint_output(v, why);
             if (!compiled) output = "compile error: the compiler's output is in the test \"" + m + " compiles\"\n" + output;
-            const bool hidden = visibility == "after_published";
+            const bool hidden = is_hidden;
             tests.push_back({{"name", m + " " + cname},
                              {"score", got},
                              {"max_score", max},
@@ -500,8 +506,13 @@ int cmd_report(const std::vector<std::string>& args) {
         }
     }
     std::ostringstream summary;
-    summary << "Score " << fmt_points(score) << " / " << fmt_points(total) << ".";
+    if (hidden_count == 0) {
+        summary << "Score " << fmt_points(score) << " / " << fmt_points(total) << ".";
+    } else {
+        summary << "Visible checkpoints:";
+    }
     for (const auto& [m, p] : per_milestone) summary << " " << m << ": " << fmt_points(p.first) << "/" << fmt_points(p.second) << ".";
+    if (hidden_count > 0) summary << " More checkpoints are shown when the grades are published.";
     if (!seed.empty()) summary << " Scene seed " << seed << ".";
     json results = {{"score", score},
                     {"output", summary.str()},
@@ -673,10 +684,16 @@ int cmd_plan(const std::vector<std::string>& args) {
         std::cout << id << " " << id << " " << seed << " visible "
                   << fmt_points(it == r.points.end() ? r.default_points : it->second) << " " << clean(s.title(id)) << "\n";
     }
-    if (args.size() >= 4 && !args[3].empty()) {
+    if (args.size() >= 4 && !args[3].empty()) try {
         const json h = json::parse(read_text(args[3]));
         std::set<std::string> names;
+        int entry = 0;
         for (const json& c : h.at("checkpoints")) {
+            ++entry;
+            if (!c.contains("name") || !c.contains("milestone") || !c.contains("scene") || !c.contains("seed")) {
+                throw std::invalid_argument("checkpoint " + std::to_string(entry) +
+                                            " needs name, milestone, scene and seed (points and title are optional)");
+            }
             if (c.at("milestone").get<std::string>() != m) continue;
             const std::string name = c.at("name").get<std::string>(), scene = c.at("scene").get<std::string>();
             const bool plain = !name.empty() && std::all_of(name.begin(), name.end(), [](char ch) {
@@ -691,6 +708,8 @@ int cmd_plan(const std::vector<std::string>& args) {
                       << fmt_points(c.value("points", r.default_points)) << " "
                       << clean(c.value("title", s.title(scene))) << "\n";
         }
+    } catch (const std::exception& e) {
+        throw std::invalid_argument(args[3] + ": " + e.what());
     }
     return 0;
 }

@@ -274,10 +274,16 @@ void probes(Group g, Values& v) {
             for (std::size_t k = 0; k < order.size() && k < 16; ++k) v["probe.painter." + std::to_string(k)] = order[k];
             break;
         }
+        case Group::kRotationDrift: {
+            const Mat4 step = CALL("rotate", m3::rotate(vec(-3, 3), r(1, 3) / 1000));
+            Mat4 acc = m3::identity();
+            for (int k = 0; k < 10000; ++k) acc = mul(step, acc);
+            put(v, "probe.precision.r", acc);
+            break;
+        }
         case Group::kNearSingular:
         case Group::kClip:
-        case Group::kRotationDrift:
-            break;  // their public inputs already vary (scenes.cpp), or need none
+            break;  // their public inputs already vary (scenes.cpp)
     }
 }
 
