@@ -44,6 +44,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/checkpoint.h"
+#include "harness/html.h"
 #include "harness/verdict.h"
 #include "m1/functions.h"
 #include "m1/judge.h"
@@ -60,6 +61,7 @@
 #include "raster/io.h"
 
 namespace fs = std::filesystem;
+using cp::html_escape;
 using nlohmann::json;
 
 namespace {
@@ -311,20 +313,6 @@ std::string fmt_points(double p) {
     return s.str();
 }
 
-std::string html_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&#39;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 std::string join(const std::vector<std::string>& parts, const std::string& sep) {
     std::string out;
@@ -361,12 +349,6 @@ img{image-rendering:pixelated;width:192px;border:1px solid #999}
 pre{background:#f5f5f5;padding:.6em;white-space:pre-wrap;max-height:24em;overflow:auto}
 </style>)";
 
-// Marks the page once every picture has loaded: data-broken counts the ones that did not (the
-// grader's tests read it through headless Chromium). The only script on the page.
-const char* kLoadMarker =
-    "<script>addEventListener('load',()=>{document.body.dataset.broken="
-    "[...document.images].filter(i=>!i.naturalWidth).length;"
-    "document.body.dataset.pictures=document.images.length;});</script>\n";
 
 // One checkpoint's text for Gradescope's `output` and the HTML page.
 std::string checkpoint_output(const json& v, const std::string& why) {
@@ -526,7 +508,7 @@ int cmd_report(const std::vector<std::string>& args) {
          << "</title>" << kStyle << "</head><body><h1>Grade: " << html_escape(name) << "</h1><p>"
          << html_escape(summary.str()) << "</p><table><tr><th>checkpoint</th><th>status</th><th>points</th>"
          << "<th>concepts</th><th>your ms</th><th>reference ms</th><th>pixels differ</th></tr>\n"
-         << rows.str() << "</table>\n" << sections.str() << kLoadMarker << "</body></html>\n";
+         << rows.str() << "</table>\n" << sections.str() << cp::kPictureLoadMarker << "</body></html>\n";
     std::ofstream(out / "report.html") << html.str();
     std::cout << summary.str() << "\n";
     return 0;
@@ -630,7 +612,7 @@ int cmd_class(const std::vector<std::string>& args) {
         for (const std::string& m : milestones) html << "<td>" << fmt_points(r.milestone.count(m) ? r.milestone.at(m) : 0) << "</td>";
         html << "</tr>\n";
     }
-    html << "</table>" << kLoadMarker << "</body></html>\n";
+    html << "</table>" << cp::kPictureLoadMarker << "</body></html>\n";
     std::cout << "class results: " << (out / "class.csv").string() << ", " << (out / "class.html").string() << "\n";
     return 0;
 }

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "raster/vec.h"
+
 namespace cp {
 
 inline std::uint64_t fnv1a(std::string_view text) {
@@ -38,6 +40,21 @@ public:
 
 private:
     std::mt19937_64 gen_;
+};
+
+// A symmetry of the w x h image (transpose only when square), then an integer translation.
+// Each maps pixel centers to pixel centers, the 1/16 grid to itself and the sample grid of
+// fill_triangle_aa to itself (a mirror maps x to w - x exactly). Milestones 1 and 2 use it.
+struct ImageSymmetry {
+    int w = 0, h = 0;
+    bool transpose = false, mirror_x = false, mirror_y = false;
+    int tx = 0, ty = 0;
+    raster::Vec2 operator()(raster::Vec2 p) const {
+        if (transpose) std::swap(p.x, p.y);
+        if (mirror_x) p.x = w - p.x;
+        if (mirror_y) p.y = h - p.y;
+        return {p.x + tx, p.y + ty};
+    }
 };
 
 }  // namespace cp

@@ -20,9 +20,12 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/diagnosis.h"
+#include "harness/html.h"
 #include "harness/record.h"
 
 namespace {
+
+using cp::html_escape;
 
 nlohmann::json json_number(double v) {
     if (!std::isfinite(v)) return nullptr;  // JSON has no infinity (PSNR of identical images)
@@ -37,17 +40,6 @@ nlohmann::json json_metrics(const raster::ImageMetrics& m) {
             {"psnr_db", json_number(m.psnr_db)}};
 }
 
-std::string html_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '&') out += "&amp;";
-        else if (c == '"') out += "&quot;";
-        else out += c;
-    }
-    return out;
-}
 
 void write_html(const std::vector<cp::Record>& records, const std::string& path) {
     std::ofstream html(path);
@@ -124,11 +116,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         html << "</p>\n";
     }
     html << cp::diagnosis_footer_html(records);
-    // Marks the page once every picture has loaded: data-broken counts the ones that did not
-    // (the project's test reads it through headless Chromium).
-    html << "<script>addEventListener('load',()=>{document.body.dataset.broken="
-            "[...document.images].filter(i=>!i.naturalWidth).length;"
-            "document.body.dataset.pictures=document.images.length;});</script>\n";
+    html << cp::kPictureLoadMarker;
 }
 
 // One checkpoint's report as its process printed it: from "checkpoint <id>: " to its

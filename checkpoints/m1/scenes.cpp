@@ -403,19 +403,7 @@ std::vector<Scene> make_scenes() {
 
 using Rng = cp::VariantRng;
 
-// A symmetry of the w x h image (transpose only when square), then an integer translation.
-// Each maps pixel centers to pixel centers; a mirror maps x to w - x exactly.
-struct Symmetry {
-    int w = 0, h = 0;
-    bool transpose = false, mirror_x = false, mirror_y = false;
-    int tx = 0, ty = 0;
-    Vec2 operator()(Vec2 p) const {
-        if (transpose) std::swap(p.x, p.y);
-        if (mirror_x) p.x = w - p.x;
-        if (mirror_y) p.y = h - p.y;
-        return {p.x + tx, p.y + ty};
-    }
-};
+using Symmetry = cp::ImageSymmetry;  // see variant_random.h
 
 Box map_box(const Box& b, const std::function<Vec2(Vec2)>& f) {
     const Vec2 p = f({b.xmin, b.ymin}), q = f({b.xmax, b.ymax});

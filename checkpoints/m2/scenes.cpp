@@ -319,20 +319,7 @@ std::vector<Scene> make_scenes() {
 
 using Rng = cp::VariantRng;
 
-// A symmetry of the w x h image (transpose only when square), then an integer translation.
-// Each maps pixel centers to pixel centers, the 1/16 grid to itself and the sample grid of
-// fill_triangle_aa to itself (a mirror maps x to w - x exactly).
-struct Symmetry {
-    int w = 0, h = 0;
-    bool transpose = false, mirror_x = false, mirror_y = false;
-    int tx = 0, ty = 0;
-    Vec2 operator()(Vec2 p) const {
-        if (transpose) std::swap(p.x, p.y);
-        if (mirror_x) p.x = w - p.x;
-        if (mirror_y) p.y = h - p.y;
-        return {p.x + tx, p.y + ty};
-    }
-};
+using Symmetry = cp::ImageSymmetry;  // see variant_random.h
 
 bool near_image(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::abs(p.x) < 1e4 && std::abs(p.y) < 1e4; }
 
