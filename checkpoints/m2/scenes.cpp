@@ -348,24 +348,6 @@ void recolor(Scene& s, Rng& rng) {
 Scene vary(const Scene& pub, Rng& rng) {
     Scene s = pub;
     const std::string& id = s.id;
-    if (id == "m2.fan") {
-        // A new center (up to a pixel away, on the 1/16 grid) and a new phase: still a fan
-        // of triangles sharing every inner edge, inside the image.
-        const Tri& first = pub.tris.front();
-        const Vec2 c0 = first.v[0];
-        const double r = raster::length(first.v[1] - c0);
-        const Vec2 c{c0.x + rng.uniform(-16, 16) / 16.0, c0.y + rng.uniform(-16, 16) / 16.0};
-        const double phase = rng.uniform(0, 999) * (2 * std::numbers::pi / 1000);
-        // Built here, not with fan(): the last outer vertex is the first one exactly (the
-        // angle phase + 2 pi is not phase in floating point), so the fan closes.
-        const int n = int(pub.tris.size());
-        auto at = [&](int k) {
-            const double a = phase + 2 * std::numbers::pi * (k % n) / n;
-            return Vec2{c.x + r * std::cos(a), c.y + r * std::sin(a)};
-        };
-        s.tris.clear();
-        for (int k = 0; k < n; ++k) s.tris.push_back(solid(c, at(k), at(k + 1), kPalette[k % 8]));
-    }
     if (id == "m2.edge_and_box") {
         // Move the snapped points by whole units (their fractions, which decide the rounding, stay).
         for (Vec2& p : s.numbers.snaps) {

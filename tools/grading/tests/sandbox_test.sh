@@ -176,9 +176,12 @@ case "$case_name" in
     [ "$is_root" = 1 ] || skip "needs root to start sandbox-run as another user"
     chown "$uid:$uid" "$base/work"
     mkdir -m 0700 "$base/own" && chown "$uid:$uid" "$base/own"
+    # A copy the ordinary user can reach: the repository may sit in a folder only root can
+    # enter (a clone in `mktemp -d`, mode 0700).
+    cp "$sandbox" "$base/sandbox-run" && chmod 755 "$base/sandbox-run"
     as_user() {
       rc=0
-      setpriv --reuid="$uid" --regid="$uid" --clear-groups -- "$sandbox" --mode "$mode" \
+      setpriv --reuid="$uid" --regid="$uid" --clear-groups -- "$base/sandbox-run" --mode "$mode" \
         --workdir "$base/work" --status "$base/own/status" "$@" >"$base/out" 2>"$base/err" || rc=$?
       cp "$base/own/status" "$base/results/status" 2>/dev/null || rm -f "$base/results/status"
     }
