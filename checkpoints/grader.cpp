@@ -58,6 +58,10 @@
 #include "m3/judge.h"
 #include "m3/render.h"
 #include "m3/scenes.h"
+#include "m4/functions.h"
+#include "m4/judge.h"
+#include "m4/render.h"
+#include "m4/scenes.h"
 #include "raster/io.h"
 
 namespace fs = std::filesystem;
@@ -75,6 +79,8 @@ const std::vector<cp::Suite>& suites() {
                        m2cp::use_variant),
         cp::make_suite("m3", m3cp::scenes, nullptr, m3cp::reference::render, m3cp::judge, m3cp::functions(),
                        m3cp::topics(), m3cp::use_variant),
+        cp::make_suite("m4", m4cp::scenes, nullptr, m4cp::reference::render, m4cp::judge, m4cp::functions(),
+                       m4cp::topics(), m4cp::use_variant),
     };
     return all;
 }

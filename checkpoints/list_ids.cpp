@@ -8,6 +8,7 @@
 #include "m1/scenes.h"
 #include "m2/scenes.h"
 #include "m3/scenes.h"
+#include "m4/scenes.h"
 
 namespace {
 template <typename Scene>
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
     if (m == "m1") return print(m1cp::scenes());
     if (m == "m2") return print(m2cp::scenes());
     if (m == "m3") return print(m3cp::scenes());
-    std::cerr << "usage: checkpoint_ids m1|m2|m3\n";
+    if (m == "m4") return print(m4cp::scenes());
+    std::cerr << "usage: checkpoint_ids m1|m2|m3|m4\n";
     return 2;
 }

@@ -36,6 +36,9 @@
 #include "m3/render.h"
 #include "m3/scenes.h"
 #include "m3/tables.h"
+#include "m4/render.h"
+#include "m4/scenes.h"
+#include "m4/functions.h"
 #include "m1/functions.h"
 #include "m2/functions.h"
 #include "m3/functions.h"
@@ -59,6 +62,7 @@ std::vector<Entry> all_scenes() {
     for (const m1cp::Scene& s : m1cp::scenes()) out.push_back({"m1", s.id, s.title, s.demo, m1cp::reference::render});
     for (const m2cp::Scene& s : m2cp::scenes()) out.push_back({"m2", s.id, s.title, s.demo, m2cp::reference::render});
     for (const m3cp::Scene& s : m3cp::scenes()) out.push_back({"m3", s.id, s.title, s.demo, m3cp::reference::render});
+    for (const m4cp::Scene& s : m4cp::scenes()) out.push_back({"m4", s.id, s.title, s.demo, m4cp::reference::render});
     return out;
 }
 
@@ -214,6 +218,7 @@ std::string todo_table_text(const std::string& milestone) {
     if (milestone == "m1") suite.functions = m1cp::functions();
     if (milestone == "m2") suite.functions = m2cp::functions();
     if (milestone == "m3") suite.functions = m3cp::functions();
+    if (milestone == "m4") suite.functions = m4cp::functions();
     if (suite.functions.empty()) throw std::runtime_error("no milestone named " + milestone);
     std::ifstream rubric_file(RASTER_RUBRIC);
     if (!rubric_file) throw std::runtime_error(std::string("cannot read the rubric ") + RASTER_RUBRIC);
@@ -269,6 +274,6 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table|m3-table [--update|--check FILE]\n"
-                 "       reference_tool todo-table m1|m2|m3 [--update|--check FILE]\n";
+                 "       reference_tool todo-table m1|m2|m3|m4 [--update|--check FILE]\n";
     return 2;
 }

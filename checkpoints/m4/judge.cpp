@@ -1,0 +1,623 @@
+// Judge half of the milestone-4 checkpoints (trusted: it runs no code under test).
+//
+// Oracles: hand-worked values for the pinned rules (depth keys, the depth test and its tie
+// rule, weights, Lambert, clamping, debug colors), the reference's numbers on the same inputs
+// (normals, clipping, stage counts, depth keys read back from the buffer), the expected
+// picture, and analytic pictures computed here from the scene alone (the checkerboard floor
+// by ray casting, the perfect sphere), against which the error is measured and reported.
+#include "m4/judge.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "m4/scenes.h"
+
+namespace m4cp {
+
+namespace {
+
+using Values = std::map<std::string, double>;
+
+std::string num(double v) {
+    if (std::abs(v) < 1e-12) v = 0;
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+double get(const Values& v, const std::string& key) {
+    const auto it = v.find(key);
+    return it == v.end() ? std::nan("") : it->second;
+}
+
+bool close(double a, double b, double tol) {
+    if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
+    return std::abs(a - b) <= tol * std::max(1.0, std::abs(b));
+}
+
+Vec3 vec3(const Values& v, const std::string& key) { return {get(v, key + ".x"), get(v, key + ".y"), get(v, key + ".z")}; }
+std::string str(Vec3 p) { return "(" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) + ")"; }
+bool same3(Vec3 a, Vec3 b, double tol) { return close(a.x, b.x, tol) && close(a.y, b.y, tol) && close(a.z, b.z, tol); }
+Color color3(const Values& v, const std::string& key) {
+    auto ch = [&](const char* c) {
+        const double x = get(v, key + c);
+        return static_cast<std::uint8_t>(std::isfinite(x) ? std::clamp(x, 0.0, 255.0) : 0);
+    };
+    return {ch(".r"), ch(".g"), ch(".b")};
+}
+std::string str(Color c) { return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")"; }
+
+struct Ctx {
+    const Scene& s;
+    const Values& mine;
+    const Values& ref;
+    cp::Judgement& j;
+    void add(const std::string& topic, const std::string& msg) {
+        std::string todo, text = msg;
+        const auto colon = msg.find(": ");
+        if (msg.rfind("TODO", 0) == 0 && colon != std::string::npos && colon < 16) {
+            todo = msg.substr(0, colon);
+            text = msg.substr(colon + 2);
+        }
+        for (const cp::Finding& f : j.findings) {
+            if (f.topic == topic && f.message == text) return;
+        }
+        j.findings.push_back({topic, text, "", todo});
+    }
+};
+
+// ---- the pinned rules, recomputed here ----
+
+std::uint32_t trusted_key(int format, double z, double w) {
+    if (std::isnan(z)) return 0xFFFFFFFFu;
+    const double d = std::clamp((z + 1) / 2, 0.0, 1.0);
+    switch (format) {
+        case 0: return std::bit_cast<std::uint32_t>(static_cast<float>(d));
+        case 1: return 0x7F800000u - std::bit_cast<std::uint32_t>(static_cast<float>(std::clamp((1 - z) / 2, 0.0, 1.0)));
+        case 2: return static_cast<std::uint32_t>(std::llround(d * double((1u << 24) - 1)));
+        default:
+            if (!(w > 0) || !std::isfinite(w)) return 0xFFFFFFFFu;
+            return 0x7F800000u - std::bit_cast<std::uint32_t>(static_cast<float>(1 / w));
+    }
+}
+
+const char* kFormatNames[4] = {"float z", "reversed-Z", "24-bit fixed", "1/w"};
+
+Vec3 unit_or_zero(Vec3 v) {
+    const double len = raster::length(v);
+    if (!(len > 0) || !std::isfinite(len)) return {};
+    return v / len;
+}
+
+Vec3 lambert(Vec3 ambient, const std::vector<LightSpec>& lights, Color base, Vec3 position, Vec3 normal) {
+    const Vec3 n = unit_or_zero(normal);
+    Vec3 sum = ambient;
+    for (const LightSpec& l : lights) {
+        const Vec3 dir = l.point ? unit_or_zero(l.vector - position) : unit_or_zero(-l.vector);
+        sum = sum + l.intensity * std::max(0.0, raster::dot(n, dir));
+    }
+    return {base.r * sum.x, base.g * sum.y, base.b * sum.z};
+}
+
+Color clamp_color(Vec3 v) {
+    auto ch = [](double x) { return static_cast<std::uint8_t>(std::isnan(x) ? 0 : std::lround(std::clamp(x, 0.0, 255.0))); };
+    return {ch(v.x), ch(v.y), ch(v.z)};
+}
+
+void judge_group(Group g, Ctx& c) {
+    const Values& v = c.mine;
+    switch (g) {
+        case Group::kDepthKeys: {
+            const auto cases = key_cases();
+            for (std::size_t i = 0; i < cases.size(); ++i) {
+                const auto& k = cases[i];
+                const double mine = get(v, "key" + std::to_string(i));
+                const double want = trusted_key(k.format, k.z_ndc, k.w);
+                if (mine == want) continue;
+                std::string other;
+                for (int f = 0; f < 4; ++f) {
+                    if (f != k.format && mine == trusted_key(f, k.z_ndc, k.w)) other = kFormatNames[f];
+                }
+                const bool big = k.format == 2 || (k.format != 2 && std::abs(mine - want) > 1);
+                if (!big) continue;  // one unit in the last place of a float: rounding
+                c.add(k.format == 1 || k.format == 3 ? "depth format" : "depth key",
+                      "TODO 1: depth_key(" + std::string(kFormatNames[k.format]) + ", z_ndc " + num(k.z_ndc) + ", w " +
+                          num(k.w) + ") gave " + num(mine) + ", expected " + num(want) +
+                          (other.empty() ? "" : " (that is the key of " + other + ")") +
+                          (std::isnan(k.z_ndc) ? ": NaN must give kClearKey" : ""));
+            }
+            break;
+        }
+        case Group::kDepthTest: {
+            const bool want[] = {true, false, true, false, false, false, true, true, true, true, false};
+            const char* what[] = {"key 5 against stored 6 (nearer)", "key 6 against stored 5 (farther)",
+                                  "a tie, the new color brighter in red", "a tie, the new color darker in red",
+                                  "a tie with the very same color", "kClearKey against kClearKey",
+                                  "key 0 against a cleared pixel", "kClearKey - 1 against a cleared pixel",
+                                  "a tie, equal red, brighter green", "a tie, equal red and green, brighter blue",
+                                  "a tie, equal red, darker green"};
+            const bool reversed = get(v, "pass0") == 0 && get(v, "pass1") == 1;
+            for (int i = 0; i < 11; ++i) {
+                const double mine = get(v, "pass" + std::to_string(i));
+                if ((mine != 0) == want[i]) continue;
+                const bool tie = i >= 2 && i != 6 && i != 7;
+                c.add(reversed || !tie ? "depth test" : "tie rule",
+                      std::string("TODO 2: depth_passes on ") + what[i] + " returned " + (mine != 0 ? "true" : "false") +
+                          (reversed ? ": the comparison is reversed (a SMALLER key is nearer)" : ""));
+            }
+            break;
+        }
+        case Group::kClearFrame: {
+            if (get(v, "depth.size") != 35 || get(v, "depth.not_clear") != 0) {
+                c.add("depth clear", "TODO 2: after clear_frame of a 7x5 frame with depth, the buffer held " +
+                                         num(get(v, "depth.size")) + " keys, " + num(get(v, "depth.not_clear")) +
+                                         " of them not kClearKey; expected 35 keys, all kClearKey");
+            }
+            if (get(v, "again.key4") != 0xFFFFFFFFu) {
+                c.add("depth clear", "TODO 2: a second clear_frame left a key of the previous frame (" +
+                                         num(get(v, "again.key4")) + "): every frame starts with every key kClearKey");
+            }
+            if (get(v, "format") != 2) c.add("depth clear", "TODO 2: clear_frame must set frame.format");
+            if (get(v, "color.wrong") != 0 || get(v, "color.width") != 7) {
+                c.add("depth clear", "TODO 2: clear_frame must fill every pixel of frame.color with the background "
+                                     "and keep its size (" + num(get(v, "color.wrong")) + " pixels were not)");
+            }
+            if (get(v, "off.capacity") != 0) {
+                c.add("needs", "TODO 2: clear_frame without a depth test kept " + num(get(v, "off.capacity")) +
+                                   " keys of memory: release it (a vector keeps its capacity after clear())");
+            }
+            break;
+        }
+        case Group::kWeights: {
+            const std::array<double, 3> ls[] = {{0.2, 0.3, 0.5}, {1, 0, 0}, {0.25, 0.25, 0.5}, {0.6, 0.3, 0.1}};
+            const std::array<double, 3> ws[] = {{1, 2, 4}, {3, 1, 1}, {2, 2, 2}, {0.01, 10, 100}};
+            for (int i = 0; i < 4; ++i) {
+                double q[3], sum = 0;
+                for (int k = 0; k < 3; ++k) sum += q[k] = ls[i][k] / ws[i][k];
+                bool ok = true, screen = true;
+                for (int k = 0; k < 3; ++k) {
+                    const double mine = get(v, "w" + std::to_string(i) + "." + std::to_string(k));
+                    ok &= close(mine, q[k] / sum, 1e-9);
+                    screen &= close(mine, ls[i][k], 1e-12);
+                }
+                if (!ok) {
+                    c.add("perspective", "TODO 3: perspective_weights((" + num(ls[i][0]) + ", " + num(ls[i][1]) + ", " +
+                                             num(ls[i][2]) + "), w (" + num(ws[i][0]) + ", " + num(ws[i][1]) + ", " +
+                                             num(ws[i][2]) + ")) should be (" + num(q[0] / sum) + ", " + num(q[1] / sum) +
+                                             ", " + num(q[2] / sum) + ")" +
+                                             (screen ? ": you returned the screen weights unchanged" : ""));
+                }
+            }
+            break;
+        }
+        case Group::kNormals: {
+            const double r3 = 1 / std::sqrt(3.0);
+            const std::pair<const char*, Vec3> faces[] = {
+                {"face", {0, 0, 1}}, {"face_tilted", {r3, r3, r3}}, {"face_cw", {0, 0, -1}}, {"face_degenerate", {0, 0, 0}}};
+            for (const auto& [key, want] : faces) {
+                const Vec3 mine = vec3(v, key);
+                if (!same3(mine, want, 1e-9)) {
+                    c.add(std::string(key) == "face_degenerate" ? "zero normal" : "normals",
+                          std::string("TODO 4a: face_normal (") + key + ") gave " + str(mine) + ", expected " + str(want));
+                }
+            }
+            if (get(v, "vn.size") != 6) c.add("normals", "TODO 4b: vertex_normals must return one normal per position");
+            for (int i = 0; i < 6; ++i) {
+                const std::string key = "vn" + std::to_string(i);
+                const Vec3 mine = vec3(v, key), want = vec3(c.ref, key);
+                if (!same3(mine, want, 1e-9)) {
+                    c.add("normals", "TODO 4b: vertex normal " + std::to_string(i) + " is " + str(mine) + ", expected " +
+                                         str(want) + " (sum the UNnormalized cross products, so a big face weighs "
+                                                     "more; a vertex no valid triangle uses gets zero)");
+                }
+            }
+            for (const char* key : {"nm", "nm_singular"}) {
+                bool ok = true;
+                for (int i = 0; i < 4; ++i) {
+                    for (int k = 0; k < 4; ++k) {
+                        const std::string e = std::string(key) + "." + std::to_string(i) + std::to_string(k);
+                        ok &= close(get(v, e), get(c.ref, e), 1e-9);
+                    }
+                }
+                if (!ok) {
+                    c.add("normal matrix", std::string("TODO 4c: normal_matrix of ") +
+                                               (std::string(key) == "nm" ? "translate * scale(2, 0.5, 1) * rotate_z(0.3)"
+                                                                         : "the singular scale(1, 0, 1) (expected: the zero matrix)") +
+                                               " is wrong: the inverse transpose of the upper-left 3x3, last row and "
+                                               "column (0, 0, 0, 1)");
+                }
+            }
+            break;
+        }
+        case Group::kLambert: {
+            const auto cases = lambert_cases();
+            for (std::size_t i = 0; i < cases.size(); ++i) {
+                const auto& k = cases[i];
+                const Vec3 want = lambert(k.ambient, k.lights, k.base, k.position, k.normal);
+                const Vec3 mine = vec3(v, "shade" + std::to_string(i));
+                if (same3(mine, want, 1e-9)) continue;
+                const Vec3 ambient_only{k.base.r * k.ambient.x, k.base.g * k.ambient.y, k.base.b * k.ambient.z};
+                std::string topic = "lambert", why;
+                if (i == 1 && (mine.x < ambient_only.x - 1e-6)) {
+                    topic = "negative light";
+                    why = ": a light behind the surface made it darker than ambient; use max(0, N . L)";
+                } else if ((i == 0 && same3(mine, ambient_only, 1e-9)) || (i == 1 && mine.x > ambient_only.x + 1e-6)) {
+                    topic = "light direction";
+                    why = ": L must point from the surface TOWARD the light, i.e. -direction for a directional light";
+                } else if (i == 2 || i == 8) {
+                    topic = "grazing light";
+                } else if (i == 6) {
+                    topic = "zero normal";
+                    why = ": a zero normal lights nothing (ambient only), never NaN";
+                }
+                c.add(topic, "TODO 5a: shade() case " + std::to_string(i) + " gave " + str(mine) + " levels, expected " +
+                                 str(want) + why);
+            }
+            const Color want[] = {{12, 13, 128}, {255, 0, 255}, {255, 0, 255}, {0, 0, 128}};
+            for (int i = 0; i < 4; ++i) {
+                const std::string key = "color" + std::to_string(i);
+                const Color mine = color3(v, key);
+                if (mine == want[i]) continue;
+                const bool wrapped = i == 1 && mine.r == 44;
+                c.add("clamp", "TODO 5b: to_color case " + std::to_string(i) + " gave " + str(mine) + ", expected " +
+                                   str(want[i]) +
+                                   (wrapped ? ": 300 wrapped around to 44; clamp to [0, 255] before converting" : ""));
+            }
+            break;
+        }
+        case Group::kDebugColors: {
+            const double zs[] = {-1, 1, 0.1, 0.5, -3, 2};
+            for (int i = 0; i < 6; ++i) {
+                const double d = std::clamp((zs[i] + 1) / 2, 0.0, 1.0), level = 255 * (1 - d);
+                const Color mine = color3(v, "gray" + std::to_string(i));
+                if (std::abs(mine.r - level) <= 1 && mine.r == mine.g && mine.g == mine.b) continue;
+                c.add("debug view", "TODO 6: depth_gray(" + num(zs[i]) + ") gave " + str(mine) + ", expected a gray of " +
+                                        num(level) + " (near white, far black)");
+            }
+            const Vec3 ns[] = {{0, 0, 1}, {1, 0, 0}, {0, -2, 0}, {1, 1, 1}, {0, 0, 0}};
+            for (int i = 0; i < 5; ++i) {
+                const Vec3 n = unit_or_zero(ns[i]);
+                const Vec3 want = (n + Vec3{1, 1, 1}) * 127.5;
+                const Color mine = color3(v, "ncolor" + std::to_string(i));
+                if (std::abs(mine.r - want.x) <= 1 && std::abs(mine.g - want.y) <= 1 && std::abs(mine.b - want.z) <= 1) continue;
+                c.add("debug view", "TODO 6: normal_color" + str(ns[i]) + " gave " + str(mine) + ", expected about " +
+                                        str(want) + " (of the NORMALIZED normal)");
+            }
+            break;
+        }
+        case Group::kClip: {
+            const auto cases = clip_cases();
+            static const char* kFields[] = {".cx", ".cy", ".cz", ".cw", ".color.x", ".color.y", ".color.z", ".normal.x",
+                                            ".normal.y", ".normal.z", ".world.x", ".world.y", ".world.z", ".u", ".v"};
+            for (std::size_t i = 0; i < cases.size(); ++i) {
+                const std::string key = "clip" + std::to_string(i);
+                const int n = static_cast<int>(get(v, key + ".n")), rn = static_cast<int>(get(c.ref, key + ".n"));
+                if (n != rn) {
+                    c.add("clipping", "TODO 7b: clip_triangle case " + std::to_string(i) + " gave " + std::to_string(n) +
+                                          " vertices, expected " + std::to_string(rn));
+                    continue;
+                }
+                // The same polygon, possibly starting at another vertex (the plane order is free).
+                bool found_any = false, positions_only = false;
+                for (int shift = 0; shift < std::max(1, n) && !found_any; ++shift) {
+                    bool all = true, pos = true;
+                    for (int a = 0; a < n; ++a) {
+                        const std::string mk = key + "." + std::to_string((a + shift) % n), rk = key + "." + std::to_string(a);
+                        for (int f = 0; f < 15; ++f) {
+                            const bool ok = close(get(v, mk + kFields[f]), get(c.ref, rk + kFields[f]), 1e-9);
+                            all &= ok;
+                            if (f < 4) pos &= ok;
+                        }
+                    }
+                    found_any = all;
+                    positions_only |= pos && !all;
+                }
+                if (!found_any) {
+                    c.add("clipping", "TODO 7: clip_triangle case " + std::to_string(i) +
+                                          (positions_only ? ": the positions are right but the attributes are not: lerp "
+                                                            "every attribute with the same t as the position"
+                                                          : ": the vertices differ from the reference's"));
+                }
+            }
+            break;
+        }
+    }
+}
+
+// ---- pictures ----
+
+// Pixels next to an edge or a color boundary of the expected image (a neighbour differs by more
+// than 16 levels) may differ, up to a fifth of them; elsewhere 3 levels (lighting rounding).
+cp::Tolerance tolerance_for(const raster::Image& expected) {
+    cp::Tolerance t;
+    t.strict_channel_diff = 3;
+    t.lenient = raster::Mask(expected.width(), expected.height());
+    auto far_apart = [](Color a, Color b) {
+        return std::abs(a.r - b.r) > 16 || std::abs(a.g - b.g) > 16 || std::abs(a.b - b.b) > 16;
+    };
+    for (int y = 0; y < expected.height(); ++y) {
+        for (int x = 0; x < expected.width(); ++x) {
+            const Color c = expected.at(x, y);
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    if (expected.in_bounds(x + dx, y + dy) && far_apart(expected.at(x + dx, y + dy), c)) t.lenient.set(x, y);
+                }
+            }
+        }
+    }
+    t.max_lenient_diffs = t.lenient.count() / 5;
+    t.why = "pixels next to an edge depend on how a vertex near a pixel boundary rounds";
+    return t;
+}
+
+bool differs(const raster::Image& a, const raster::Image& e, const cp::Tolerance& t) {
+    if (a.width() != e.width() || a.height() != e.height()) return true;
+    long long lenient = 0;
+    for (int y = 0; y < e.height(); ++y) {
+        for (int x = 0; x < e.width(); ++x) {
+            const Color p = a.at(x, y), q = e.at(x, y);
+            const int d = std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
+            if (t.lenient.get(x, y)) {
+                lenient += d > 0;
+            } else if (d > t.strict_channel_diff) {
+                return true;
+            }
+        }
+    }
+    return lenient > t.max_lenient_diffs;
+}
+
+// The view basis of a camera, as look_at pins it (f forward, r right, u up).
+struct Basis {
+    Vec3 r, u, f;
+};
+Basis basis(const Camera& c) {
+    Vec3 f = unit_or_zero(c.target - c.eye);
+    if (raster::length(f) == 0) f = {0, 0, -1};
+    Vec3 side = raster::cross(f, unit_or_zero(c.up));
+    if (!(raster::length(side) >= 1e-9)) side = {1, 0, 0};
+    const Vec3 r = unit_or_zero(side);
+    return {r, raster::cross(r, f), f};
+}
+
+// The ray through the center of pixel (x, y) of a perspective panel.
+Vec3 ray(const Panel& p, const Basis& b, int x, int y) {
+    const double t = std::tan(p.camera.fovy * std::numbers::pi / 360), aspect = double(p.w) / p.h;
+    const double nx = 2 * (x + 0.5) / p.w - 1, ny = 1 - 2 * (y + 0.5) / p.h;
+    return b.r * (nx * t * aspect) + b.u * (ny * t) + b.f;
+}
+
+}  // namespace
+
+raster::Image analytic_checker(const Panel& p) {
+    raster::Image img(p.w, p.h, p.background);
+    if (p.items.empty() || p.items[0].mesh.positions.size() < 4) return img;
+    const auto& q = p.items[0].mesh.positions;
+    const Vec3 a = q[0], eu = q[1] - q[0], ev = q[3] - q[0];
+    const Vec3 n = raster::cross(eu, ev);
+    const Basis b = basis(p.camera);
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            const Vec3 d = ray(p, b, x, y);
+            const double denom = raster::dot(n, d);
+            if (denom == 0) continue;
+            const double t = raster::dot(n, a - p.camera.eye) / denom;
+            if (!(t > 0)) continue;
+            const Vec3 hit = p.camera.eye + d * t - a;
+            const double u = raster::dot(hit, eu) / raster::dot(eu, eu), v = raster::dot(hit, ev) / raster::dot(ev, ev);
+            if (u < 0 || u > 1 || v < 0 || v > 1) continue;
+            const long long i = static_cast<long long>(std::floor(u * 8)), k = static_cast<long long>(std::floor(v * 8));
+            img.set(x, y, ((i + k) % 2 == 0) ? Color{255, 255, 255} : Color{32, 32, 32});
+        }
+    }
+    return img;
+}
+
+raster::Image analytic_sphere(const Panel& p) {
+    raster::Image img(p.w, p.h, p.background);
+    if (p.items.empty()) return img;
+    const Item& it = p.items[0];
+    const Basis b = basis(p.camera);
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            const Vec3 d = unit_or_zero(ray(p, b, x, y));
+            const Vec3 oc = p.camera.eye - it.position;
+            const double r = it.size.x;  // uniform scale in these scenes
+            const double half_b = raster::dot(oc, d), cc = raster::dot(oc, oc) - r * r;
+            const double disc = half_b * half_b - cc;
+            if (disc < 0) continue;
+            const double t = -half_b - std::sqrt(disc);
+            if (!(t > 0)) continue;
+            const Vec3 hit = p.camera.eye + d * t;
+            img.set(x, y, clamp_color(lambert(p.ambient, p.lights, it.material, hit, (hit - it.position) / r)));
+        }
+    }
+    return img;
+}
+
+// The mean absolute channel difference between a panel of `img` and `truth`, in levels.
+double panel_error(const raster::Image& img, const Panel& p, const raster::Image& truth) {
+    double sum = 0;
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            const Color a = img.at(p.x0 + x, p.y0 + y), e = truth.at(x, y);
+            sum += std::abs(a.r - e.r) + std::abs(a.g - e.g) + std::abs(a.b - e.b);
+        }
+    }
+    return sum / (3.0 * p.w * p.h);
+}
+
+namespace {
+
+const char* picture_topic(const std::string& id) {
+    static const std::map<std::string, const char*> topics = {
+        {"m4.occlusion_order", "depth test"},       {"m4.interpenetrating", "depth test"},
+        {"m4.depth_view", "debug view"},            {"m4.clear_between_frames", "depth clear"},
+        {"m4.perspective_checker", "perspective"},  {"m4.screen_space_checker", "interpolation"},
+        {"m4.flat_sphere", "flat shading"},         {"m4.gouraud_sphere", "gouraud"},
+        {"m4.per_pixel_sphere", "per-pixel normals"}, {"m4.light_behind", "negative light"},
+        {"m4.nonuniform_scale", "normal matrix"},   {"m4.grazing_light", "grazing light"},
+        {"m4.overflow", "clamp"},                   {"m4.normal_view", "debug view"},
+        {"m4.zfight_formats", "depth format"},      {"m4.coplanar", "tie rule"},
+        {"m4.degenerate_normals", "zero normal"},   {"m4.near_eye", "clipping"},
+        {"m4.extreme_input", "bad input"},          {"m4.needs", "needs"},
+    };
+    const auto it = topics.find(id);
+    return it == topics.end() ? "pipeline" : it->second;
+}
+
+void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, const raster::Image& expected) {
+    const Scene& s = c.s;
+    const auto main_it = art.images.find("main");
+    const raster::Image* mine = main_it == art.images.end() ? nullptr : &main_it->second;
+    const bool sized = mine && mine->width() == s.width && mine->height() == s.height;
+    const std::string topic = picture_topic(s.id);
+
+    if (sized && !expected.empty() && differs(*mine, expected, tolerance_for(expected))) {
+        c.add(topic, "the picture differs from the expected one beyond the tolerance (see diff.png); this scene is "
+                     "about: " + s.hint);
+    }
+    for (std::size_t p = 0; p < s.panels.size(); ++p) {
+        const Panel& panel = s.panels[p];
+        const std::string key = "panel" + std::to_string(p);
+        const std::string where = s.panels.size() > 1 ? " (panel " + std::to_string(p + 1) + ")" : "";
+        if (get(c.mine, key + ".resized") == 1) {
+            c.add("depth clear", "TODO 2: clear_frame replaced frame.color by an image of another size" + where);
+        }
+        // Only what a scene needs: the depth buffer, read back by the render half.
+        const double cap = get(c.mine, key + ".depth_capacity"), ref_cap = get(c.ref, key + ".depth_capacity");
+        if (ref_cap == 0 && cap != 0) {
+            c.add("needs", "TODO 2: this scene does not depth-test, yet the frame holds " + num(cap) +
+                               " depth keys of memory" + where);
+        } else if (ref_cap > 0 && cap < double(panel.w) * panel.h) {
+            c.add("depth clear", "TODO 2: the depth buffer has room for " + num(cap) + " keys, the frame has " +
+                                     std::to_string(panel.w * panel.h) + " pixels" + where);
+        }
+        // The counts.
+        static const char* kStats[][3] = {
+            {"triangles_clipped", "clipping", "triangles sent to clip_triangle"},
+            {"triangles_culled", "pipeline", "fan triangles culled"},
+            {"triangles_drawn", "pipeline", "fan triangles drawn"},
+            {"fragments", "rasterizer", "fragments (covered pixel centers)"},
+            {"depth_tests", "needs", "depth tests"},
+            {"depth_writes", "depth test", "depth writes"},
+            {"vertex_normals", "needs", "vertex normals computed"},
+            {"shade_calls", "needs", "calls of shade()"},
+            {"interpolated", "needs", "attribute values interpolated"},
+        };
+        const bool clipped = get(c.ref, key + ".stats.triangles_clipped") > 0;
+        for (const auto& st : kStats) {
+            const std::string k = key + ".stats." + st[0];
+            const double a = get(c.mine, k), b = get(c.ref, k);
+            if (a != 0 || b != 0) c.j.measures[std::string(st[0]) + where + " (reference " + num(b) + ")"] = a;
+            const std::string name = st[0];
+            const bool per_triangle = name.rfind("triangles", 0) == 0 || name == "vertex_normals";
+            bool ok;
+            if (b == 0 || a == 0) {
+                ok = a == b;
+            } else if (per_triangle) {
+                // After clipping, a fan may hold zero-area triangles whose culling rounding decides.
+                ok = a == b || (clipped && name != "triangles_clipped" && std::abs(a - b) <= 0.02 * b + 2);
+            } else {
+                ok = std::abs(a - b) <= 0.02 * b + 4;  // pixel counts: rounding at edges
+            }
+            if (ok) continue;
+            std::string why;
+            if (b == 0) why = ": this scene does not need that stage (Needs), so draw_mesh must not run it";
+            c.add(b == 0 ? "needs" : st[1], "TODO 9: " + num(a) + " " + st[2] + where + ", expected " +
+                                                (per_triangle ? num(b) : "about " + num(b)) + why);
+        }
+        // Keys read back from the depth buffer at known pixels, against the reference's.
+        for (std::size_t k = 0; k < panel.depth_probes.size(); ++k) {
+            const std::string pk = key + ".probe" + std::to_string(k);
+            const double a = get(c.mine, pk), b = get(c.ref, pk);
+            const bool float_format = panel.format == Format::kFloatZ || panel.format == Format::kReversedZ ||
+                                      panel.format == Format::kInverseW;
+            if (std::abs(a - b) <= (float_format ? 4 : 2)) continue;
+            const auto [x, y] = panel.depth_probes[k];
+            double d = std::nan("");
+            if (panel.format == Format::kFloatZ && b >= 0) d = std::bit_cast<float>(static_cast<std::uint32_t>(b));
+            c.add("depth key", "TODO 8: the depth buffer at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                   ")" + where + " holds key " + num(a) + ", expected " + num(b) +
+                                   (std::isnan(d) ? "" : " (d = " + num(d) + ")") +
+                                   ": depth is interpolated with the SCREEN weights, then depth_key");
+        }
+        if (!sized) continue;
+        if (s.checks.checker_error) {
+            const raster::Image truth = analytic_checker(panel);
+            long long inside = 0, wrong = 0, ref_wrong = 0;
+            const auto ref_it = ref.images.find("main");
+            for (int y = 0; y < panel.h; ++y) {
+                for (int x = 0; x < panel.w; ++x) {
+                    const Color t = truth.at(x, y);
+                    if (t == panel.background) continue;
+                    ++inside;
+                    wrong += !(mine->at(panel.x0 + x, panel.y0 + y) == t);
+                    if (ref_it != ref.images.end()) ref_wrong += !(ref_it->second.at(panel.x0 + x, panel.y0 + y) == t);
+                }
+            }
+            const double err = inside ? 100.0 * wrong / inside : 0, ref_err = inside ? 100.0 * ref_wrong / inside : 0;
+            c.j.measures["pixels off the analytic checkerboard, % (reference " + num(std::round(ref_err * 10) / 10) + ")"] =
+                std::round(err * 10) / 10;
+            if (panel.perspective_correct && err > ref_err + 2) {
+                c.add("perspective", "TODO 3: " + num(std::round(err * 10) / 10) +
+                                         "% of the floor's pixels are off the exact checkerboard (reference " +
+                                         num(std::round(ref_err * 10) / 10) +
+                                         "%): interpolate u/w, v/w and 1/w on the screen, not u and v");
+            }
+        }
+        if (s.checks.sphere_error) {
+            const double err = panel_error(*mine, panel, analytic_sphere(panel));
+            const auto ref_it = ref.images.find("main");
+            const double ref_err = ref_it == ref.images.end() ? 0 : panel_error(ref_it->second, panel, analytic_sphere(panel));
+            c.j.measures["mean error vs the perfect sphere, levels (reference " + num(std::round(ref_err * 100) / 100) + ")"] =
+                std::round(err * 100) / 100;
+        }
+        if (s.checks.zfight) {
+            long long far_shows = 0;
+            for (int y = 0; y < panel.h; ++y) {
+                for (int x = 0; x < panel.w; ++x) far_shows += mine->at(panel.x0 + x, panel.y0 + y) == Color{250, 220, 80};
+            }
+            c.j.measures[std::string("z-fighting pixels, ") + kFormatNames[int(panel.format)]] = double(far_shows);
+            c.j.measures[std::string("ms, ") + kFormatNames[int(panel.format)]] = 1e3 * get(c.mine, key + ".seconds");
+        }
+    }
+    for (const auto& [p, q] : s.checks.same_panels) {
+        if (!sized) break;
+        const Panel &a = s.panels[std::size_t(p)], &b = s.panels[std::size_t(q)];
+        long long diff = 0;
+        for (int y = 0; y < a.h; ++y) {
+            for (int x = 0; x < a.w; ++x) diff += !(mine->at(a.x0 + x, a.y0 + y) == mine->at(b.x0 + x, b.y0 + y));
+        }
+        if (diff > 0) {
+            c.add(topic == std::string("tie rule") ? "tie rule" : "depth test",
+                  "TODO 2: the same triangles drawn in another order give another picture (" + std::to_string(diff) +
+                      " pixels differ between panel " + std::to_string(p + 1) + " and panel " + std::to_string(q + 1) +
+                      "): the depth test must decide every pixel, and a fragment that fails must write nothing, "
+                      "not even its depth");
+        }
+    }
+}
+
+}  // namespace
+
+cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const cp::Artifacts& reference,
+                    const raster::Image& expected) {
+    const Scene& s = scene(id);
+    cp::Judgement j;
+    if (!expected.empty()) j.tolerance = tolerance_for(expected);
+    Ctx c{s, artifacts.values, reference.values, j};
+    if (artifacts.stray_writes > 0) {
+        c.add("rasterizer", "TODO 8: " + std::to_string(artifacts.stray_writes) +
+                                " write(s) outside the image: clamp the bounding box to the image");
+    }
+    for (Group g : s.groups) judge_group(g, c);
+    if (!s.panels.empty()) judge_picture(c, artifacts, reference, expected);
+    return j;
+}
+
+}  // namespace m4cp

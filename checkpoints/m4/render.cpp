@@ -1,0 +1,282 @@
+// Render half: turns a scene into calls to the milestone-4 functions. Everything here runs
+// the code under test, so nothing here decides a verdict. Value keys are read by judge.cpp.
+// The matrices come from milestone 3 (the reference, in the checkpoint programs).
+#include "m4/render.h"
+
+#include <cmath>
+
+#include "depth_lighting.h"
+#include "m4/scenes.h"
+#include "raster/timer.h"
+
+namespace m4cp {
+namespace RASTER_FLAVOUR {
+
+namespace {
+
+using m3::Mat4;
+using Values = std::map<std::string, double>;
+
+// Every call into the code under test goes through cp::traced: CALL("name", expression).
+cp::Artifacts* g_out = nullptr;
+#define CALL(name, ...) cp::traced(*g_out, name, [&] { return __VA_ARGS__; })
+
+void put(Values& v, const std::string& key, Vec3 p) {
+    v[key + ".x"] = p.x;
+    v[key + ".y"] = p.y;
+    v[key + ".z"] = p.z;
+}
+void put(Values& v, const std::string& key, Color c) {
+    v[key + ".r"] = c.r;
+    v[key + ".g"] = c.g;
+    v[key + ".b"] = c.b;
+}
+void put(Values& v, const std::string& key, const Mat4& m) {
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) v[key + "." + std::to_string(i) + std::to_string(j)] = m.m[i][j];
+    }
+}
+
+m4::Lighting to_lighting(Vec3 ambient, const std::vector<LightSpec>& lights) {
+    m4::Lighting l;
+    l.ambient = ambient;
+    for (const LightSpec& s : lights) {
+        l.lights.push_back({s.point ? m4::Light::Kind::kPoint : m4::Light::Kind::kDirectional, s.vector, s.intensity});
+    }
+    return l;
+}
+
+m4::Mesh to_mesh(const Mesh& m) { return {m.positions, m.triangles, m.face_colors, m.vertex_colors, m.uvs, m.normals}; }
+
+Mat4 model_matrix(const Item& it) {
+    return m3::translate(it.position) * m3::rotate(it.axis, it.angle) * m3::scale(it.size);
+}
+
+void numbers(Group g, Values& v) {
+    switch (g) {
+        case Group::kDepthKeys: {
+            const auto cases = key_cases();
+            for (std::size_t i = 0; i < cases.size(); ++i) {
+                const auto& c = cases[i];
+                v["key" + std::to_string(i)] =
+                    CALL("depth_key", m4::depth_key(static_cast<m4::DepthFormat>(c.format), c.z_ndc, c.w));
+            }
+            break;
+        }
+        case Group::kDepthTest: {
+            const Color dark{10, 200, 30}, bright{11, 0, 0}, same{10, 200, 30};
+            struct Case {
+                std::uint32_t key;
+                Color c;
+                std::uint32_t stored;
+                Color t;
+            };
+            const Case cases[] = {
+                {5, dark, 6, bright},       {6, bright, 5, dark},          {5, bright, 5, dark},
+                {5, dark, 5, bright},       {5, same, 5, dark},            {m4::kClearKey, bright, m4::kClearKey, dark},
+                {0, dark, m4::kClearKey, bright}, {m4::kClearKey - 1, dark, m4::kClearKey, bright},
+                {7, {10, 201, 0}, 7, dark}, {7, {10, 200, 31}, 7, dark},   {7, {10, 199, 255}, 7, dark},
+            };
+            int i = 0;
+            for (const Case& c : cases) v["pass" + std::to_string(i++)] = CALL("depth_passes", m4::depth_passes(c.key, c.c, c.stored, c.t));
+            break;
+        }
+        case Group::kClearFrame: {
+            m4::Frame frame;
+            frame.color = cp::guarded_image(7, 5);
+            frame.depth.assign(3, 42);
+            cp::traced(*g_out, "clear_frame", frame.color, [&] { m4::clear_frame(frame, {9, 8, 7}, true, m4::DepthFormat::kFixed24); });
+            v["depth.size"] = double(frame.depth.size());
+            long long not_clear = 0;
+            for (std::uint32_t k : frame.depth) not_clear += k != m4::kClearKey;
+            v["depth.not_clear"] = double(not_clear);
+            v["format"] = double(static_cast<int>(frame.format));
+            long long wrong_color = 0;
+            for (int y = 0; y < frame.color.height(); ++y) {
+                for (int x = 0; x < frame.color.width(); ++x) wrong_color += !(frame.color.at(x, y) == Color{9, 8, 7});
+            }
+            v["color.wrong"] = double(wrong_color);
+            v["color.width"] = frame.color.width();
+            frame.depth[4] = 3;
+            cp::traced(*g_out, "clear_frame", frame.color, [&] { m4::clear_frame(frame, {1, 2, 3}, true, m4::DepthFormat::kFloatZ); });
+            v["again.key4"] = frame.depth.size() > 4 ? double(frame.depth[4]) : -1;
+            cp::traced(*g_out, "clear_frame", frame.color, [&] { m4::clear_frame(frame, {1, 2, 3}, false, m4::DepthFormat::kFloatZ); });
+            v["off.capacity"] = double(frame.depth.capacity());
+            g_out->stray_writes += frame.color.stray_writes();
+            break;
+        }
+        case Group::kWeights: {
+            const std::array<double, 3> ls[] = {{0.2, 0.3, 0.5}, {1, 0, 0}, {0.25, 0.25, 0.5}, {0.6, 0.3, 0.1}};
+            const std::array<double, 3> ws[] = {{1, 2, 4}, {3, 1, 1}, {2, 2, 2}, {0.01, 10, 100}};
+            for (int i = 0; i < 4; ++i) {
+                const auto p = CALL("perspective_weights", m4::perspective_weights(ls[i], ws[i]));
+                for (int k = 0; k < 3; ++k) v["w" + std::to_string(i) + "." + std::to_string(k)] = p[k];
+            }
+            break;
+        }
+        case Group::kNormals: {
+            put(v, "face", CALL("face_normal", m4::face_normal({0, 0, 0}, {2, 0, 0}, {0, 3, 0})));
+            put(v, "face_tilted", CALL("face_normal", m4::face_normal({1, 0, 0}, {0, 1, 0}, {0, 0, 1})));
+            put(v, "face_cw", CALL("face_normal", m4::face_normal({0, 0, 0}, {0, 3, 0}, {2, 0, 0})));
+            put(v, "face_degenerate", CALL("face_normal", m4::face_normal({1, 1, 1}, {2, 2, 2}, {3, 3, 3})));
+            // A big triangle facing +z and a small one facing +x share vertex 0: area weighting
+            // tilts its normal mostly toward +z.
+            const std::vector<Vec3> pos = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, -1}, {0, 1, 0}, {7, 7, 7}};
+            const std::vector<std::array<int, 3>> tris = {{0, 1, 2}, {0, 3, 4}, {1, 9, 2}};
+            const auto vn = CALL("vertex_normals", m4::vertex_normals(pos, tris));
+            v["vn.size"] = double(vn.size());
+            for (std::size_t i = 0; i < vn.size() && i < 6; ++i) put(v, "vn" + std::to_string(i), vn[i]);
+            put(v, "nm", CALL("normal_matrix", m4::normal_matrix(m3::translate({5, 6, 7}) * m3::scale({2, 0.5, 1}) * m3::rotate_z(0.3))));
+            put(v, "nm_singular", CALL("normal_matrix", m4::normal_matrix(m3::scale({1, 0, 1}))));
+            break;
+        }
+        case Group::kLambert: {
+            const auto cases = lambert_cases();
+            for (std::size_t i = 0; i < cases.size(); ++i) {
+                const auto& c = cases[i];
+                const Vec3 levels = CALL("shade", m4::shade(to_lighting(c.ambient, c.lights), c.base, c.position, c.normal));
+                put(v, "shade" + std::to_string(i), levels);
+            }
+            const Vec3 to_colors[] = {{12.4, 12.6, 128.2}, {300, -20, 255.4}, {1e9, -1e9, 254.6}, {std::nan(""), 0.49, 127.7}};
+            for (int i = 0; i < 4; ++i) put(v, "color" + std::to_string(i), CALL("to_color", m4::to_color(to_colors[i])));
+            break;
+        }
+        case Group::kDebugColors: {
+            const double zs[] = {-1, 1, 0.1, 0.5, -3, 2};
+            for (int i = 0; i < 6; ++i) put(v, "gray" + std::to_string(i), CALL("depth_gray", m4::depth_gray(zs[i])));
+            const Vec3 ns[] = {{0, 0, 1}, {1, 0, 0}, {0, -2, 0}, {1, 1, 1}, {0, 0, 0}};
+            for (int i = 0; i < 5; ++i) put(v, "ncolor" + std::to_string(i), CALL("normal_color", m4::normal_color(ns[i])));
+            break;
+        }
+        case Group::kClip: {
+            const auto cases = clip_cases();
+            for (std::size_t i = 0; i < cases.size(); ++i) {
+                std::array<m4::ClipVertex, 3> tri;
+                for (int k = 0; k < 3; ++k) {
+                    tri[k].clip = cases[i].clip[k];
+                    tri[k].color = cases[i].color[k];
+                    tri[k].uv = cases[i].uv[k];
+                    tri[k].normal = {double(k), 1, -double(k)};
+                    tri[k].world = cases[i].color[k] / 100;
+                }
+                const auto poly = CALL("clip_triangle", m4::clip_triangle(tri));
+                const std::string key = "clip" + std::to_string(i);
+                v[key + ".n"] = double(poly.size());
+                for (std::size_t j = 0; j < poly.size() && j < 16; ++j) {
+                    const std::string k = key + "." + std::to_string(j);
+                    v[k + ".cx"] = poly[j].clip.x;
+                    v[k + ".cy"] = poly[j].clip.y;
+                    v[k + ".cz"] = poly[j].clip.z;
+                    v[k + ".cw"] = poly[j].clip.w;
+                    put(v, k + ".color", poly[j].color);
+                    put(v, k + ".normal", poly[j].normal);
+                    put(v, k + ".world", poly[j].world);
+                    v[k + ".u"] = poly[j].uv.x;
+                    v[k + ".v"] = poly[j].uv.y;
+                }
+            }
+            break;
+        }
+    }
+}
+
+void add_stats(m4::Stats& total, const m4::Stats& st) {
+    total.triangles_clipped += st.triangles_clipped;
+    total.triangles_culled += st.triangles_culled;
+    total.triangles_drawn += st.triangles_drawn;
+    total.fragments += st.fragments;
+    total.depth_tests += st.depth_tests;
+    total.depth_writes += st.depth_writes;
+    total.vertex_normals += st.vertex_normals;
+    total.shade_calls += st.shade_calls;
+    total.interpolated += st.interpolated;
+}
+
+void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
+    for (std::size_t p = 0; p < s.panels.size(); ++p) {
+        const Panel& panel = s.panels[p];
+        const Camera& c = panel.camera;
+        const double aspect = double(panel.w) / panel.h;
+        const Mat4 view = m3::look_at(c.eye, c.target, c.up);
+        const Mat4 proj = c.ortho ? m3::orthographic(-c.half_height * aspect, c.half_height * aspect, -c.half_height,
+                                                     c.half_height, c.near, c.far)
+                                  : m3::perspective(c.fovy, aspect, c.near, c.far);
+        m4::Needs needs;
+        needs.depth_test = panel.depth_test;
+        needs.depth_format = static_cast<m4::DepthFormat>(panel.format);
+        needs.shading = static_cast<m4::Shading>(panel.shading);
+        needs.perspective_correct = panel.perspective_correct;
+        needs.cull = panel.cull;
+        const m4::Lighting lighting = to_lighting(panel.ambient, panel.lights);
+        std::vector<std::vector<int>> frames = panel.frames;
+        if (frames.empty()) {
+            frames.emplace_back();
+            for (std::size_t i = 0; i < panel.items.size(); ++i) frames[0].push_back(static_cast<int>(i));
+        }
+        std::vector<m4::Mesh> meshes;
+        std::vector<Mat4> models;
+        for (const Item& it : panel.items) {
+            meshes.push_back(to_mesh(it.mesh));
+            models.push_back(model_matrix(it));
+        }
+
+        m4::Frame frame;
+        frame.color = cp::guarded_image(panel.w, panel.h);
+        m4::Stats total;
+        const raster::Stopwatch watch;
+        for (const auto& items : frames) {
+            cp::traced(*g_out, "clear_frame", frame.color,
+                       [&] { m4::clear_frame(frame, panel.background, needs.depth_test, needs.depth_format); });
+            for (int i : items) {
+                const Item& it = panel.items[std::size_t(i)];
+                const m4::Stats st = cp::traced(*g_out, "draw_mesh", frame.color, [&] {
+                    return m4::draw_mesh(frame, meshes[std::size_t(i)], models[std::size_t(i)], view, proj, lighting,
+                                         it.material, needs);
+                });
+                add_stats(total, st);
+            }
+        }
+        const std::string key = "panel" + std::to_string(p);
+        out.values[key + ".seconds"] = watch.seconds();
+        // Read by the render half itself, not reported by the code under test.
+        out.values[key + ".depth_capacity"] = double(frame.depth.capacity());
+        for (std::size_t k = 0; k < panel.depth_probes.size(); ++k) {
+            const auto [x, y] = panel.depth_probes[k];
+            const std::size_t at = std::size_t(y) * std::size_t(panel.w) + std::size_t(x);
+            out.values[key + ".probe" + std::to_string(k)] = at < frame.depth.size() ? double(frame.depth[at]) : -1;
+        }
+        out.values[key + ".stats.triangles_clipped"] = double(total.triangles_clipped);
+        out.values[key + ".stats.triangles_culled"] = double(total.triangles_culled);
+        out.values[key + ".stats.triangles_drawn"] = double(total.triangles_drawn);
+        out.values[key + ".stats.fragments"] = double(total.fragments);
+        out.values[key + ".stats.depth_tests"] = double(total.depth_tests);
+        out.values[key + ".stats.depth_writes"] = double(total.depth_writes);
+        out.values[key + ".stats.vertex_normals"] = double(total.vertex_normals);
+        out.values[key + ".stats.shade_calls"] = double(total.shade_calls);
+        out.values[key + ".stats.interpolated"] = double(total.interpolated);
+        out.stray_writes += frame.color.stray_writes();
+        if (frame.color.width() != panel.w || frame.color.height() != panel.h) {
+            out.values[key + ".resized"] = 1;  // clear_frame replaced the image
+            continue;
+        }
+        for (int y = 0; y < panel.h; ++y) {
+            for (int x = 0; x < panel.w; ++x) img.set(panel.x0 + x, panel.y0 + y, frame.color.at(x, y));
+        }
+    }
+}
+
+}  // namespace
+
+cp::Artifacts render(const std::string& id) {
+    const Scene& s = scene(id);
+    return cp::render_guarded(s.width, s.height, [&](raster::Image& img, cp::Artifacts& out) {
+        g_out = &out;
+        for (Group g : s.groups) numbers(g, out.values);
+        if (!s.panels.empty()) draw_panels(s, img, out);
+    });
+}
+
+#undef CALL
+
+}  // namespace RASTER_FLAVOUR
+}  // namespace m4cp

@@ -1,0 +1,570 @@
+#include "m4/scenes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "harness/checkpoint.h"
+#include "variant_random.h"
+
+namespace m4cp {
+
+Mesh sphere_mesh(int segments, bool with_normals) {
+    Mesh m;
+    const int rings = std::max(2, segments / 2);
+    segments = std::max(3, segments);
+    const double pi = std::numbers::pi;
+    // Rows of vertices from the north pole (y = 1) to the south pole; each pole is one vertex.
+    m.positions.push_back({0, 1, 0});
+    for (int r = 1; r < rings; ++r) {
+        const double theta = pi * r / rings;
+        for (int s = 0; s < segments; ++s) {
+            const double phi = 2 * pi * s / segments;
+            m.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)});
+        }
+    }
+    m.positions.push_back({0, -1, 0});
+    const int south = static_cast<int>(m.positions.size()) - 1;
+    auto at = [segments](int ring, int s) { return 1 + (ring - 1) * segments + (s % segments); };
+    // Seen from outside, with phi growing counter-clockwise about +y as seen from above.
+    for (int s = 0; s < segments; ++s) m.triangles.push_back({0, at(1, s), at(1, s + 1)});
+    for (int r = 1; r + 1 < rings; ++r) {
+        for (int s = 0; s < segments; ++s) {
+            m.triangles.push_back({at(r, s), at(r + 1, s), at(r + 1, s + 1)});
+            m.triangles.push_back({at(r, s), at(r + 1, s + 1), at(r, s + 1)});
+        }
+    }
+    for (int s = 0; s < segments; ++s) m.triangles.push_back({at(rings - 1, s), south, at(rings - 1, s + 1)});
+    m.face_colors.assign(m.triangles.size(), Color{200, 200, 200});
+    if (with_normals) m.normals = m.positions;
+    return m;
+}
+
+Mesh quad_mesh(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Color color) {
+    Mesh m;
+    m.positions = {a, b, c, d};
+    m.triangles = {{0, 1, 2}, {0, 2, 3}};
+    m.face_colors = {color, color};
+    m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    return m;
+}
+
+namespace {
+
+Mesh triangle_mesh(Vec3 a, Vec3 b, Vec3 c, Color color) {
+    Mesh m;
+    m.positions = {a, b, c};
+    m.triangles = {{0, 1, 2}};
+    m.face_colors = {color};
+    return m;
+}
+
+Item item(Mesh mesh) {
+    Item it;
+    it.mesh = std::move(mesh);
+    return it;
+}
+
+Scene numbers(std::string id, std::string title, std::string hint, std::vector<int> todos, std::vector<Group> groups) {
+    Scene s;
+    s.id = std::move(id);
+    s.title = std::move(title);
+    s.hint = std::move(hint);
+    s.todos = std::move(todos);
+    s.width = s.height = 16;
+    s.groups = std::move(groups);
+    return s;
+}
+
+Scene picture(std::string id, std::string title, std::string hint, std::vector<int> todos, int w, int h) {
+    Scene s;
+    s.id = std::move(id);
+    s.title = std::move(title);
+    s.hint = std::move(hint);
+    s.todos = std::move(todos);
+    s.width = w;
+    s.height = h;
+    return s;
+}
+
+// A camera at a generic position (no vertex lands exactly on a pixel boundary).
+Camera cam(Vec3 eye, Vec3 target = {0.013, -0.021, 0.007}, double near = 0.5, double far = 100) {
+    Camera c;
+    c.eye = eye;
+    c.target = target;
+    c.near = near;
+    c.far = far;
+    return c;
+}
+
+Panel panel(Camera c, std::vector<Item> items, int x0, int y0, int w, int h, Shade shading, bool depth = true) {
+    Panel p;
+    p.camera = c;
+    p.items = std::move(items);
+    p.x0 = x0;
+    p.y0 = y0;
+    p.w = w;
+    p.h = h;
+    p.shading = shading;
+    p.depth_test = depth;
+    return p;
+}
+
+LightSpec directional(Vec3 travel, Vec3 intensity = {0.9, 0.9, 0.9}) { return {false, travel, intensity}; }
+LightSpec point(Vec3 position, Vec3 intensity = {0.9, 0.9, 0.9}) { return {true, position, intensity}; }
+
+const Color kRed{220, 70, 60}, kGreen{70, 190, 90}, kBlue{70, 110, 230}, kYellow{250, 220, 80}, kDim{60, 90, 200};
+
+std::vector<Item> layered_triangles() {
+    return {item(triangle_mesh({-1.4, -1.0, 1.0}, {0.9, -1.2, 1.0}, {-0.3, 1.1, 1.0}, kRed)),
+            item(triangle_mesh({-0.6, -0.7, 0.0}, {1.6, -0.5, 0.0}, {0.6, 1.5, 0.0}, kGreen)),
+            item(triangle_mesh({-1.7, 0.2, -1.0}, {1.2, -1.5, -1.0}, {1.3, 1.3, -1.0}, kBlue))};
+}
+
+// The pairs of nearly coplanar quads of the z-fighting checkpoint: at view distances 5, 50, 500
+// and 5000, a dim quad in front and a bright one 0.2% of the distance behind it, each pair in
+// its own band of the picture and tilted so its depth varies across it.
+std::vector<Item> zfight_items() {
+    std::vector<Item> items;
+    const double distances[4] = {5, 50, 500, 5000};
+    const double band[4] = {0.255, 0.085, -0.085, -0.255};  // tan of each band's angle
+    for (int k = 0; k < 4; ++k) {
+        const double dist = distances[k];
+        const double y = dist * band[k], half_h = dist * 0.06, half_w = dist * 0.3;
+        for (int layer = 0; layer < 2; ++layer) {
+            const double z = -dist * (1 + 0.002 * layer);
+            const double tilt = dist * 0.05;  // the top is farther than the bottom
+            Item it = item(quad_mesh({-half_w, y - half_h, z + tilt}, {half_w, y - half_h, z + tilt},
+                                     {half_w, y + half_h, z - tilt}, {-half_w, y + half_h, z - tilt},
+                                     layer == 0 ? kDim : kYellow));
+            items.push_back(it);
+        }
+    }
+    return items;
+}
+
+std::vector<Scene> build() {
+    std::vector<Scene> all;
+    auto add = [&all](Scene s) { all.push_back(std::move(s)); };
+
+    // ---- numbers ----
+    add(numbers("m4.depth_keys", "Depth keys in four formats",
+                "each format's key of known depths: d = (z_ndc + 1) / 2 clamped, float bits, reversed bits, 24-bit "
+                "fixed point, 1/w",
+                {1}, {Group::kDepthKeys}));
+    add(numbers("m4.depth_test_rule", "The depth test and its tie rule",
+                "nearer (smaller key) wins; an exact tie goes to the brighter color; kClearKey never passes", {2},
+                {Group::kDepthTest, Group::kClearFrame}));
+    add(numbers("m4.weights", "Perspective-correct weights", "p_i = (l_i / w_i) / sum of (l_j / w_j)", {3},
+                {Group::kWeights}));
+    add(numbers("m4.normals", "Face normals, vertex normals, the normal matrix",
+                "normalized cross products; vertex normals sum the UNnormalized ones; the normal matrix is the "
+                "inverse transpose",
+                {4}, {Group::kNormals}));
+    add(numbers("m4.lambert", "Lambert shading values",
+                "B * (ambient + sum of I * max(0, N . L)), with L toward the light; clamp before rounding", {5},
+                {Group::kLambert}));
+    add(numbers("m4.debug_colors", "Depth and normal debug colors",
+                "gray = round(255 * (1 - d)); color = round(255 * (n + 1) / 2) of the normalized normal", {6},
+                {Group::kDebugColors}));
+    add(numbers("m4.clip_attributes", "Clipping carries the attributes",
+                "every attribute of a new vertex is interpolated with the same t as its position", {7},
+                {Group::kClip}));
+
+    // ---- occlusion ----
+    {
+        Scene s = picture("m4.occlusion_order", "Three overlapping triangles, drawn in two orders",
+                          "the depth test must decide, not the drawing order: test, then write", {8, 9, 2}, 192, 96);
+        for (int p = 0; p < 2; ++p) {
+            Panel pn = panel(cam({0.05, 0.1, 5}), layered_triangles(), 96 * p, 0, 96, 96, Shade::kFaceColor);
+            pn.camera.near = 1;
+            pn.camera.far = 20;
+            pn.frames = {p == 0 ? std::vector<int>{0, 2, 1} : std::vector<int>{1, 2, 0}};
+            s.panels.push_back(pn);
+        }
+        s.checks.same_panels = {{0, 1}};
+        add(s);
+    }
+    {
+        Scene s = picture("m4.interpenetrating", "Two triangles that pass through each other",
+                          "per pixel the nearer surface wins, so they split along the line where they cross", {8, 9},
+                          192, 96);
+        const std::vector<Item> items = {
+            item(triangle_mesh({-1.6, -1.1, -1}, {1.5, -1.2, -1}, {0.1, 1.3, 1}, kRed)),
+            item(triangle_mesh({-1.4, -1.0, 1}, {1.6, -0.9, 1}, {-0.1, 1.25, -1}, kBlue))};
+        for (int p = 0; p < 2; ++p) {
+            Panel pn = panel(cam({0.4, 0.3, 5}), items, 96 * p, 0, 96, 96, Shade::kFaceColor);
+            pn.frames = {p == 0 ? std::vector<int>{0, 1} : std::vector<int>{1, 0}};
+            s.panels.push_back(pn);
+        }
+        s.checks.same_panels = {{0, 1}};
+        add(s);
+    }
+    {
+        Scene s = picture("m4.depth_view", "Depth as gray levels, and the keys at known pixels",
+                          "gray = round(255 * (1 - d)), d interpolated with screen-space weights", {8, 6, 1}, 96, 96);
+        Panel pn = panel(cam({0.3, 1.6, 4.2}, {0.01, -0.2, 0.02}, 2.5, 8), {}, 0, 0, 96, 96, Shade::kDepthView);
+        pn.items.push_back(item(quad_mesh({-1.8, -0.8, 1.7}, {1.8, -0.8, 1.7}, {1.8, -0.8, -1.9}, {-1.8, -0.8, -1.9}, kRed)));
+        Item box = item(sphere_mesh(12, true));
+        box.position = {0.2, 0.1, 0.1};
+        box.size = {0.7, 0.7, 0.7};
+        pn.items.push_back(box);
+        pn.depth_probes = {{48, 50}, {20, 80}, {75, 85}, {50, 30}, {30, 62}, {70, 60}};
+        s.panels.push_back(pn);
+        add(s);
+    }
+    {
+        Scene s = picture("m4.clear_between_frames", "Two frames in one buffer: the second must not see the first",
+                          "clear_frame resets every key to kClearKey before each frame", {2, 9}, 96, 96);
+        Panel pn = panel(cam({0.02, 0.03, 5}), {}, 0, 0, 96, 96, Shade::kFaceColor);
+        pn.items.push_back(item(quad_mesh({-3, -3, 2.5}, {3, -3, 2.5}, {3, 3, 2.5}, {-3, 3, 2.5}, kGreen)));
+        pn.items.push_back(item(triangle_mesh({-1.3, -1.1, -1}, {1.4, -0.8, -1}, {0.1, 1.4, -1}, kYellow)));
+        pn.frames = {{0}, {1}};
+        s.panels.push_back(pn);
+        add(s);
+    }
+
+    // ---- perspective-correct interpolation ----
+    for (int correct = 1; correct >= 0; --correct) {
+        Scene s = picture(correct ? "m4.perspective_checker" : "m4.screen_space_checker",
+                          correct ? "A checkerboard floor, interpolated perspective-correctly"
+                                  : "The same floor with screen-space weights (the lesson's wrong way)",
+                          correct ? "interpolate u/w, v/w and 1/w linearly on the screen, then divide"
+                                  : "with needs.perspective_correct false, the weights are the screen weights l_i",
+                          correct ? std::vector<int>{3, 8, 9} : std::vector<int>{8, 9}, 128, 96);
+        Panel pn = panel(cam({0.05, 0.35, 3.5}, {0.02, -0.85, -3}, 0.5, 50), {}, 0, 0, 128, 96, Shade::kChecker, false);
+        pn.items.push_back(item(quad_mesh({-2, -1, 2}, {2, -1, 2}, {2, -1, -14}, {-2, -1, -14}, kRed)));
+        pn.perspective_correct = correct;
+        s.panels.push_back(pn);
+        s.checks.checker_error = true;
+        s.demo = correct;
+        add(s);
+    }
+
+    // ---- lighting ----
+    {
+        Scene s = picture("m4.flat_sphere", "A sphere, flat-shaded: one light value per face",
+                          "face normal of the world positions, lit at the centroid", {5, 4, 9}, 96, 96);
+        Panel pn = panel(cam({0.03, 0.05, 3.2}), {item(sphere_mesh(12, false))}, 0, 0, 96, 96, Shade::kFlat);
+        pn.cull = true;
+        pn.lights = {directional({-0.6, -0.7, -1})};
+        s.panels.push_back(pn);
+        s.checks.sphere_error = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m4.gouraud_sphere", "A sphere, Gouraud-shaded: lit per vertex, colors interpolated",
+                          "light each vertex once with its normal; interpolate the lit colors perspective-correctly",
+                          {5, 4, 8, 9}, 96, 96);
+        Panel pn = panel(cam({0.03, 0.05, 3.2}), {item(sphere_mesh(16, false))}, 0, 0, 96, 96, Shade::kGouraud);
+        pn.cull = true;
+        pn.lights = {directional({-0.6, -0.7, -1}, {0.5, 0.5, 0.5}), point({2.5, -1.5, 2}, {0.4, 0.3, 0.2})};
+        s.panels.push_back(pn);
+        s.checks.sphere_error = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m4.per_pixel_sphere", "A coarse sphere lit per pixel by a point light",
+                          "interpolate the normal, NORMALIZE it, then light; the world position too for a point light",
+                          {8, 5, 4, 3}, 96, 96);
+        Panel pn = panel(cam({0.03, 0.05, 3.2}), {item(sphere_mesh(8, false))}, 0, 0, 96, 96, Shade::kPerPixel);
+        pn.cull = true;
+        pn.lights = {point({2, 2.2, 2.5})};
+        s.panels.push_back(pn);
+        s.checks.sphere_error = true;
+        s.demo = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m4.light_behind", "Light from behind the surface: ambient only",
+                          "max(0, N . L): a light behind the surface adds nothing", {5, 9}, 192, 96);
+        for (int p = 0; p < 2; ++p) {
+            Panel pn = panel(cam({0.02, 0.04, 4}), {}, 96 * p, 0, 96, 96, p == 0 ? Shade::kFlat : Shade::kPerPixel);
+            pn.items.push_back(item(quad_mesh({-1.5, -1.4, 0}, {1.6, -1.5, 0}, {1.5, 1.4, 0}, {-1.4, 1.5, 0}, kRed)));
+            pn.items[0].material = {200, 160, 90};
+            pn.ambient = {0.25, 0.25, 0.25};
+            pn.lights = {directional({0.2, 0.1, 1}), point({0.3, 0.2, -2})};
+            s.panels.push_back(pn);
+        }
+        add(s);
+    }
+    {
+        Scene s = picture("m4.nonuniform_scale", "A squashed sphere: normals need the inverse transpose",
+                          "the model matrix tilts normals the wrong way under non-uniform scale", {4, 5, 9}, 96, 96);
+        Item it = item(sphere_mesh(24, true));
+        it.size = {1.7, 0.55, 1};
+        it.axis = {0, 0, 1};
+        it.angle = 0.5;
+        Panel pn = panel(cam({0.03, 0.05, 4}), {it}, 0, 0, 96, 96, Shade::kPerPixel);
+        pn.cull = true;
+        pn.lights = {directional({-1, -1.2, -0.4})};
+        s.panels.push_back(pn);
+        add(s);
+    }
+    {
+        Scene s = picture("m4.grazing_light", "A light exactly along the floor: the floor gets ambient only",
+                          "N . L = 0 exactly: no light, and no NaN", {5, 9}, 192, 96);
+        for (int p = 0; p < 2; ++p) {
+            Panel pn = panel(cam({0.02, 1.2, 4}, {0.01, -0.4, 0}), {}, 96 * p, 0, 96, 96,
+                             p == 0 ? Shade::kFlat : Shade::kPerPixel);
+            pn.items.push_back(item(quad_mesh({-2, -1, 2}, {2, -1, 2}, {2, -1, -2}, {-2, -1, -2}, kRed)));
+            Item ball = item(sphere_mesh(12, true));
+            ball.size = {0.6, 0.6, 0.6};
+            pn.items.push_back(ball);
+            pn.ambient = {0.2, 0.2, 0.2};
+            pn.lights = {directional({1, 0, 0})};
+            s.panels.push_back(pn);
+        }
+        add(s);
+    }
+    {
+        Scene s = picture("m4.overflow", "Too much light: colors saturate at white, never wrap",
+                          "clamp each channel to [0, 255] before converting to 8 bits", {5, 9}, 192, 96);
+        for (int p = 0; p < 2; ++p) {
+            Item ball = item(sphere_mesh(16, true));
+            ball.material = {220, 180, 120};
+            Panel pn = panel(cam({0.03, 0.05, 3.2}), {ball}, 96 * p, 0, 96, 96, p == 0 ? Shade::kFlat : Shade::kPerPixel);
+            pn.cull = true;
+            pn.ambient = {0.3, 0.3, 0.3};
+            pn.lights = {directional({-0.5, -0.6, -1}, {1.5, 1.5, 1.5}), point({-2, 1, 2}, {1.2, 1.2, 1.2})};
+            s.panels.push_back(pn);
+        }
+        add(s);
+    }
+    {
+        Scene s = picture("m4.normal_view", "Normals as colors", "round(255 * (n + 1) / 2) of the world-space normal",
+                          {6, 4, 9}, 96, 96);
+        Item ball = item(sphere_mesh(16, false));
+        ball.axis = {1, 0.4, 0};
+        ball.angle = 0.6;
+        Panel pn = panel(cam({0.03, 0.05, 3.2}), {ball}, 0, 0, 96, 96, Shade::kNormalView);
+        pn.cull = true;
+        s.panels.push_back(pn);
+        add(s);
+    }
+
+    // ---- stiff and extreme cases ----
+    {
+        Scene s = picture("m4.zfight_formats", "Near 0.001, far 100000: z-fighting in four depth formats",
+                          "reversed-Z and 1/w keep precision far away; float z and 24-bit fixed point do not",
+                          {1, 8, 9}, 384, 96);
+        const Format formats[4] = {Format::kFloatZ, Format::kReversedZ, Format::kFixed24, Format::kInverseW};
+        for (int p = 0; p < 4; ++p) {
+            Panel pn = panel(cam({0.0003, 0.0002, 0}, {0.0003, 0.0002, -1}, 1e-3, 1e5), zfight_items(), 96 * p, 0, 96,
+                             96, Shade::kFaceColor);
+            pn.camera.fovy = 40;
+            pn.format = formats[p];
+            s.panels.push_back(pn);
+        }
+        s.checks.zfight = true;
+        s.demo = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m4.coplanar", "Exactly coplanar triangles: the pinned tie rule decides, in either order",
+                          "an exact tie of keys goes to the brighter color, whatever the order", {2, 8}, 192, 96);
+        for (int p = 0; p < 2; ++p) {
+            Panel pn = panel(cam({0.02, 0.03, 5}), {}, 96 * p, 0, 96, 96, Shade::kFaceColor);
+            pn.camera.ortho = true;
+            pn.items.push_back(item(triangle_mesh({-1.5, -1.2, 0.3}, {1.3, -1.4, 0.3}, {0.2, 1.5, 0.3}, kRed)));
+            pn.items.push_back(item(triangle_mesh({-1.5, -1.2, 0.3}, {1.3, -1.4, 0.3}, {0.2, 1.5, 0.3}, kGreen)));
+            pn.items.push_back(item(triangle_mesh({-1.7, 0.4, 0.3}, {1.6, 0.2, 0.3}, {1.7, 1.7, 0.3}, kBlue)));
+            pn.frames = {p == 0 ? std::vector<int>{0, 1, 2} : std::vector<int>{2, 1, 0}};
+            s.panels.push_back(pn);
+        }
+        s.checks.same_panels = {{0, 1}};
+        add(s);
+    }
+    {
+        Scene s = picture("m4.degenerate_normals", "Zero-area and needle triangles in a lit mesh: no NaN",
+                          "a zero normal stays zero and gives the ambient color", {4, 5, 8}, 96, 96);
+        Mesh m;
+        m.positions = {{-1.5, -1.2, 0}, {1.4, -1.3, 0.2}, {0.1, 1.4, -0.1}, {1.4, -1.3, 0.2},  // 3 repeats 1
+                       {-1.5, -1.2, 0}, {0.1, 1.4, -0.1},  {1.8, 1.2, 0.1},  {1.8000001, 1.2, 0.1},
+                       {-1.6, 1.3, 0.4}};
+        m.triangles = {{0, 1, 2}, {1, 3, 6}, {4, 0, 4}, {2, 6, 7}, {5, 8, 0}, {6, 7, 6}, {0, 2, 8}};
+        m.face_colors.assign(m.triangles.size(), kRed);
+        Panel pn = panel(cam({0.02, 0.03, 4}), {item(m)}, 0, 0, 96, 96, Shade::kPerPixel);
+        pn.lights = {point({1, 1, 3})};
+        s.panels.push_back(pn);
+        add(s);
+    }
+    {
+        Scene s = picture("m4.near_eye", "A vertex almost at the eye, one behind it: clipped, with attributes",
+                          "clip in clip space with every attribute; perspective weights stay finite", {7, 3, 9}, 96, 96);
+        Mesh m;
+        m.positions = {{-0.004, -0.003, -0.0101}, {1.5, -1.2, -3}, {-1.2, 1.6, -4},   // one just past near
+                       {0.0, 0.0, 0.0},           {-2.0, -1.5, -5}, {2.2, -0.3, -6},  // one AT the eye
+                       {0.2, 0.1, 0.5},           {1.8, 1.5, -4.5}, {-1.5, 0.2, -3.5}};  // one behind
+        m.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}};
+        m.vertex_colors = {{255, 40, 40}, {40, 255, 40}, {40, 40, 255}, {255, 255, 0}, {0, 255, 255},
+                           {255, 0, 255}, {255, 255, 255}, {250, 120, 0}, {0, 120, 250}};
+        Panel pn = panel(cam({0, 0, 0}, {0.001, 0.0007, -1}, 0.01, 50), {item(m)}, 0, 0, 96, 96, Shade::kVertexColor);
+        s.panels.push_back(pn);
+        add(s);
+    }
+    {
+        Scene s = picture("m4.extreme_input", "NaN, infinite and huge coordinates beside one good triangle",
+                          "a non-finite clip coordinate drops its triangle; huge ones are clipped, never overflow",
+                          {9, 7, 8}, 96, 96);
+        const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+        Mesh m;
+        m.positions = {{-1.2, -1.0, 0}, {1.3, -1.1, 0}, {0.1, 1.2, 0},  // good
+                       {nan, 0, 0},     {0.5, 0.5, 0},  {inf, 1, 0},     // non-finite
+                       {1e30, -1, 0.2}, {-1e30, 1e29, 0.1}, {0.3, 1e31, -0.2},  // huge
+                       {0.4, 0.3, 1e300}, {-0.4, 0.2, -1e300}};  // far beyond both planes
+        m.triangles = {{0, 1, 2}, {3, 4, 0}, {5, 1, 4}, {6, 7, 8}, {9, 10, 2}, {0, 1, 40}, {-3, 1, 2}};
+        m.face_colors.assign(m.triangles.size(), kGreen);
+        Panel pn = panel(cam({0.02, 0.03, 4}), {item(m)}, 0, 0, 96, 96, Shade::kPerPixel);
+        pn.lights = {directional({-0.3, -0.4, -1}), point({0.5, 0.5, 2})};
+        s.panels.push_back(pn);
+        add(s);
+    }
+
+    // ---- only what a scene needs ----
+    {
+        Scene s = picture("m4.needs", "One sphere, four sets of needs: what each stage costs",
+                          "allocate the depth buffer, compute normals and interpolate attributes only when needed",
+                          {9, 2, 8}, 288, 72);
+        const Shade modes[4] = {Shade::kFaceColor, Shade::kFaceColor, Shade::kGouraud, Shade::kPerPixel};
+        for (int p = 0; p < 4; ++p) {
+            Item ball = item(sphere_mesh(16, false));
+            for (std::size_t f = 0; f < ball.mesh.face_colors.size(); ++f) {
+                ball.mesh.face_colors[f] = (f % 3 == 0) ? kRed : (f % 3 == 1) ? kGreen : kBlue;
+            }
+            Panel pn = panel(cam({0.03, 0.05, 3.2}), {ball}, 72 * p, 0, 72, 72, modes[p], p > 0);
+            pn.lights = {directional({-0.6, -0.7, -1}, {0.6, 0.6, 0.6})};
+            if (p == 3) pn.lights.push_back(point({2, 2, 2}, {0.3, 0.3, 0.3}));
+            s.panels.push_back(pn);
+        }
+        add(s);
+    }
+    return all;
+}
+
+// ---- scene variants (grading): see "Scene variants (grading)" in checkpoints/README.md ----
+
+using Rng = cp::VariantRng;
+
+std::uint64_t current_seed = 0;
+std::vector<Scene> varied;
+
+Scene vary(const Scene& pub, Rng& rng) {
+    Scene s = pub;
+    const std::string& id = s.id;
+    auto is = [&](std::initializer_list<const char*> names) {
+        return std::any_of(names.begin(), names.end(), [&](const char* n) { return id == n; });
+    };
+    // The camera moved a little (the same move for every panel), and the sphere scenes' models
+    // turned: the same ideas on other numbers.
+    if (is({"m4.occlusion_order", "m4.interpenetrating", "m4.depth_view", "m4.clear_between_frames", "m4.flat_sphere",
+            "m4.gouraud_sphere", "m4.per_pixel_sphere", "m4.nonuniform_scale", "m4.normal_view", "m4.needs",
+            "m4.overflow", "m4.perspective_checker", "m4.screen_space_checker", "m4.light_behind",
+            "m4.coplanar"})) {
+        const Vec3 d{rng.uniform(-12, 12) / 100.0, rng.uniform(-12, 12) / 100.0, rng.uniform(-12, 12) / 100.0};
+        for (Panel& p : s.panels) p.camera.eye = p.camera.eye + d;
+    }
+    if (is({"m4.flat_sphere", "m4.gouraud_sphere", "m4.per_pixel_sphere", "m4.nonuniform_scale", "m4.normal_view",
+            "m4.overflow", "m4.needs"})) {
+        const double turn = rng.uniform(-30, 30) / 100.0;
+        for (Panel& p : s.panels) {
+            for (Item& it : p.items) it.angle += turn;
+            for (LightSpec& l : p.lights) l.vector.x += rng.uniform(-20, 20) / 100.0;
+        }
+    }
+    return s;
+}
+
+const std::vector<Scene>& public_scenes() {
+    static const std::vector<Scene> all = build();
+    return all;
+}
+
+}  // namespace
+
+std::vector<KeyCase> key_cases() {
+    std::vector<KeyCase> cases;
+    const double zs[] = {-1, 1, 0, 0.3, -0.99, 0.999999, 1.5, -2};
+    for (int f = 0; f < 4; ++f) {
+        for (double z : zs) cases.push_back({f, z, 0.7 + z});
+    }
+    cases.push_back({3, 0.5, 0});
+    cases.push_back({3, 0.5, -1});
+    cases.push_back({0, std::numeric_limits<double>::quiet_NaN(), 1});
+    cases.push_back({2, std::numeric_limits<double>::quiet_NaN(), 1});
+    if (current_seed != 0) {
+        Rng rng(current_seed, "m4.depth_keys");
+        for (int k = 0; k < 12; ++k) cases.push_back({k % 4, rng.uniform(-999, 999) / 1000.0, rng.uniform(1, 5000) / 100.0});
+    }
+    return cases;
+}
+
+std::vector<ClipCase> clip_cases() {
+    std::vector<ClipCase> cases = {
+        // entirely inside
+        {{{{-0.5, -0.5, 0.2, 1}, {0.5, -0.4, 0.1, 1}, {0, 0.6, -0.3, 1}}}, {{{255, 0, 0}, {0, 255, 0}, {0, 0, 255}}},
+         {{{0, 0}, {1, 0}, {0, 1}}}},
+        // one vertex behind the near plane
+        {{{{-0.5, -0.5, 1.5, 2}, {0.5, -0.4, 1.8, 2}, {0, 0.5, -3, -1}}}, {{{255, 0, 0}, {0, 255, 0}, {0, 0, 255}}},
+         {{{0, 0}, {1, 0}, {0.5, 1}}}},
+        // across the right and top planes
+        {{{{0.2, 0.1, 0, 1}, {2.5, 0.3, 0.1, 1}, {0.4, 3, 0.2, 1}}}, {{{10, 20, 30}, {200, 40, 60}, {90, 250, 10}}},
+         {{{0.1, 0.2}, {0.9, 0.3}, {0.4, 0.8}}}},
+        // entirely outside (left)
+        {{{{-3, 0, 0, 1}, {-2, 0.5, 0, 1}, {-2.5, -0.5, 0, 1}}}, {{{1, 2, 3}, {4, 5, 6}, {7, 8, 9}}}, {{{0, 0}, {1, 0}, {0, 1}}}},
+    };
+    if (current_seed != 0) {
+        // Each vertex times its own positive factor: the same point of projective space.
+        Rng rng(current_seed, "m4.clip_attributes");
+        for (auto& c : cases) {
+            for (Vec4& v : c.clip) v = v * (rng.uniform(50, 200) / 100.0);
+        }
+    }
+    return cases;
+}
+
+std::vector<LambertCase> lambert_cases() {
+    const Color base{200, 150, 100};
+    std::vector<LambertCase> cases = {
+        {{0.1, 0.1, 0.1}, {directional({0, 0, -1}, {1, 1, 1})}, base, {0, 0, 0}, {0, 0, 1}},        // head on
+        {{0.1, 0.1, 0.1}, {directional({0, 0, 1}, {1, 1, 1})}, base, {0, 0, 0}, {0, 0, 1}},         // from behind
+        {{0.1, 0.1, 0.1}, {directional({1, 0, 0}, {1, 1, 1})}, base, {0, 0, 0}, {0, 0, 1}},         // grazing
+        {{0.2, 0.1, 0.0}, {directional({-1, -1, -1}, {0.5, 0.8, 1})}, base, {0, 0, 0}, {0, 0, 3}},  // long normal
+        {{0.1, 0.1, 0.1}, {point({3, 0, 4}, {1, 1, 1})}, base, {0, 0, 0}, {0, 0, 1}},                // point: 4/5
+        {{0.1, 0.1, 0.1}, {point({1, 2, 3}, {1, 1, 1})}, base, {1, 2, 3}, {0, 0, 1}},                // light AT the point
+        {{0.1, 0.1, 0.1}, {directional({0, 0, -1})}, base, {0, 0, 0}, {0, 0, 0}},                    // zero normal
+        {{0.3, 0.3, 0.3}, {directional({0, -1, 0}, {1.5, 1.5, 1.5}), point({0, 5, 0}, {1, 1, 1})}, base, {0, 0, 0},
+         {0, 1, 0}},  // too bright
+        {{0.1, 0.1, 0.1}, {directional({0, 0, 0})}, base, {0, 0, 0}, {0, 1, 0}},  // zero light direction
+    };
+    if (current_seed != 0) {
+        Rng rng(current_seed, "m4.lambert");
+        for (LambertCase& c : cases) {
+            c.base = {static_cast<std::uint8_t>(rng.uniform(40, 255)), static_cast<std::uint8_t>(rng.uniform(40, 255)),
+                      static_cast<std::uint8_t>(rng.uniform(40, 255))};
+            c.position = c.position + Vec3{rng.uniform(-50, 50) / 100.0, 0, rng.uniform(-50, 50) / 100.0};
+        }
+    }
+    return cases;
+}
+
+const std::vector<Scene>& scenes() { return current_seed == 0 ? public_scenes() : varied; }
+
+std::uint64_t variant_seed() { return current_seed; }
+
+const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
+
+void use_variant(std::uint64_t seed) {
+    if (seed == current_seed) return;
+    current_seed = 0;
+    varied.clear();
+    if (seed == 0) return;
+    for (const Scene& s : public_scenes()) {
+        Rng rng(seed, s.id);
+        varied.push_back(vary(s, rng));
+    }
+    current_seed = seed;
+}
+
+}  // namespace m4cp

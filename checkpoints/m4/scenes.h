@@ -1,0 +1,135 @@
+// Milestone 4 scenes: the trusted description of every depth and lighting checkpoint. Plain
+// data (no milestone-4 types), so one copy serves the student's and the reference's render
+// halves and the judge.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "raster/color.h"
+#include "raster/vec.h"
+
+namespace m4cp {
+
+using raster::Color;
+using raster::Vec2;
+using raster::Vec3;
+using raster::Vec4;
+
+struct Mesh {
+    std::vector<Vec3> positions;
+    std::vector<std::array<int, 3>> triangles;  // counter-clockwise from outside
+    std::vector<Color> face_colors;
+    std::vector<Color> vertex_colors;
+    std::vector<Vec2> uvs;
+    std::vector<Vec3> normals;
+};
+
+// model matrix = translate(position) * rotate(axis, angle) * scale(size)
+struct Item {
+    Mesh mesh;
+    Vec3 position{};
+    Vec3 axis{0, 1, 0};
+    double angle = 0;
+    Vec3 size{1, 1, 1};
+    Color material{200, 200, 200};
+};
+
+struct Camera {
+    Vec3 eye{0, 0, 5}, target{}, up{0, 1, 0};
+    bool ortho = false;
+    double fovy = 50;        // degrees
+    double half_height = 2;  // orthographic
+    double near = 0.5, far = 100;
+};
+
+struct LightSpec {
+    bool point = false;
+    Vec3 vector{0, 0, -1};  // directional: where the rays go; point: position
+    Vec3 intensity{1, 1, 1};
+};
+
+// Mirrors m4::DepthFormat and m4::Shading (same order).
+enum class Format { kFloatZ, kReversedZ, kFixed24, kInverseW };
+enum class Shade { kFaceColor, kVertexColor, kFlat, kGouraud, kPerPixel, kChecker, kDepthView, kNormalView };
+
+// One picture: a camera, items, lights and the needs, drawn into the rectangle (x0, y0, w, h)
+// of the main image. `frames` lists which items each frame draws (the picture is the last
+// frame's; the frame is cleared before each); empty: one frame with every item in order.
+struct Panel {
+    Camera camera;
+    std::vector<Item> items;
+    int x0 = 0, y0 = 0, w = 0, h = 0;
+    Color background{20, 22, 30};
+    bool depth_test = true;
+    Format format = Format::kFloatZ;
+    Shade shading = Shade::kFaceColor;
+    bool perspective_correct = true;
+    bool cull = false;
+    Vec3 ambient{0.1, 0.1, 0.1};
+    std::vector<LightSpec> lights;
+    std::vector<std::vector<int>> frames;
+    std::vector<std::array<int, 2>> depth_probes;  // pixels (in the panel) whose keys are read back
+};
+
+// Number groups: each calls some functions of the milestone on fixed inputs; the judge checks
+// the results against hand-worked values and the reference's.
+enum class Group { kDepthKeys, kDepthTest, kClearFrame, kWeights, kNormals, kLambert, kDebugColors, kClip };
+
+// Checks beyond the expected picture.
+struct Checks {
+    std::vector<std::array<int, 2>> same_panels;  // panel pairs whose pictures must be identical
+    bool checker_error = false;  // per panel: error against the analytic checkerboard (item 0, a quad)
+    bool zfight = false;         // per panel: pixels where the far surface shows
+    bool sphere_error = false;   // per panel: error against the analytic sphere (item 0)
+};
+
+struct Scene {
+    std::string id;
+    std::string title;
+    std::string hint;
+    std::vector<int> todos;  // the TODOs this checkpoint exercises, first the main one
+    int width = 96, height = 96;
+    std::vector<Panel> panels;
+    std::vector<Group> groups;
+    Checks checks;
+    bool demo = false;
+};
+
+const std::vector<Scene>& scenes();
+// Grading's scene variants: seed 0 restores the public scenes (see checkpoints/README.md).
+void use_variant(std::uint64_t seed);
+std::uint64_t variant_seed();
+const Scene& scene(const std::string& id);
+
+// Shapes shared with the demo, the tables and the benchmark.
+// A UV sphere of radius 1: `segments` around, segments / 2 from pole to pole, with its exact
+// normals when `with_normals` (else the pipeline computes them).
+Mesh sphere_mesh(int segments, bool with_normals);
+// A quad from its four corners (counter-clockwise seen from its front), uv (0,0), (1,0), (1,1),
+// (0,1) at the corners, in one face color.
+Mesh quad_mesh(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Color color);
+
+// The fixed inputs of the number groups (trusted; they vary with the seed like the pictures).
+struct KeyCase {
+    int format;
+    double z_ndc, w;
+};
+std::vector<KeyCase> key_cases();
+struct ClipCase {
+    std::array<Vec4, 3> clip;
+    std::array<Vec3, 3> color;
+    std::array<Vec2, 3> uv;
+};
+std::vector<ClipCase> clip_cases();
+struct LambertCase {
+    Vec3 ambient;
+    std::vector<LightSpec> lights;
+    Color base;
+    Vec3 position, normal;
+};
+std::vector<LambertCase> lambert_cases();
+
+}  // namespace m4cp
