@@ -22,7 +22,8 @@ bash "$root/tools/grading/gradescope-package" "$work/autograder.zip" --hidden "$
 for f in setup.sh run_autograder hidden/hidden.json; do [ -f "$ag/source/$f" ] || { echo "no $f in the zip"; exit 1; }; done
 AUTOGRADER_ROOT=$ag bash "$ag/source/setup.sh" >"$work/setup.log" 2>&1 || { tail -n 30 "$work/setup.log"; exit 1; }
 cp "$root/solutions/milestone1_lines/lines.cpp" "$root/solutions/milestone2_triangles/triangles.cpp" \
-   "$root/solutions/milestone3_transforms/transforms.cpp" "$ag/submission/"
+   "$root/solutions/milestone3_transforms/transforms.cpp" \
+   "$root/solutions/milestone4_depth_lighting/depth_lighting.cpp" "$ag/submission/"
 AUTOGRADER_ROOT=$ag RASTER_SANDBOX_MODE=plain bash "$ag/source/run_autograder" >"$work/run.log" 2>&1 || true
 python3 - "$ag/results/results.json" full <<'PY' || { cat "$work/run.log"; exit 1; }
 import json, sys
@@ -39,7 +40,7 @@ assert hidden and hidden[0]["visibility"] == "after_published", "the hidden chec
 print("reference:", r["score"], "of", total)
 PY
 cp "$root/milestone1_lines/lines.cpp" "$root/milestone2_triangles/triangles.cpp" \
-   "$root/milestone3_transforms/transforms.cpp" "$ag/submission/"
+   "$root/milestone3_transforms/transforms.cpp" "$root/milestone4_depth_lighting/depth_lighting.cpp" "$ag/submission/"
 AUTOGRADER_ROOT=$ag RASTER_SANDBOX_MODE=plain bash "$ag/source/run_autograder" >"$work/run.log" 2>&1 || true
 python3 -c "
 import json,sys; r=json.load(open('$ag/results/results.json')); assert r['score']==0, r['score']; print('skeleton: 0')" ||
