@@ -37,6 +37,7 @@
 #include "m3/scenes.h"
 #include "m3/tables.h"
 #include "m4/render.h"
+#include "m4/tables.h"
 #include "m4/scenes.h"
 #include "m4/functions.h"
 #include "m1/functions.h"
@@ -45,6 +46,7 @@
 #include "raster/compare.h"
 #include "raster/gif.h"
 #include "raster/io.h"
+#include "raster/plot.h"
 
 namespace fs = std::filesystem;
 
@@ -263,6 +265,24 @@ int main(int argc, char** argv) {
         const bool table_args = args.size() == 1 || (args.size() == 3 && (args[1] == "--update" || args[1] == "--check"));
         if (!args.empty() && args[0] == "aa-table" && table_args) return marked_table("aa-table", aa_table_text(), args);
         if (!args.empty() && args[0] == "m3-table" && table_args) return marked_table("m3-table", m3cp::error_time_tables(), args);
+        if (!args.empty() && args[0] == "m4-table" && table_args) {
+            const int rc = marked_table("m4-table", m4cp::error_time_tables(), args);
+            // The chart beside the lesson: written with --update; with --check it must exist
+            // (its times are this machine's, so only its size is checked).
+            if (rc != 0 || args.size() != 3) return rc;
+            const fs::path chart = fs::path(args[2]).parent_path() / "error_vs_time.png";
+            if (args[1] == "--update") {
+                raster::write_png(chart.string(), m4cp::error_time_chart());
+                std::cout << "wrote " << chart.string() << "\n";
+                return 0;
+            }
+            const raster::Image img = raster::read_png(chart.string());
+            if (img.width() != raster::PlotSpec{}.width) {
+                std::cerr << chart.string() << " is missing or not the chart; run `make lesson-tables`\n";
+                return 1;
+            }
+            return 0;
+        }
         if (args.size() >= 2 && args[0] == "todo-table" &&
             (args.size() == 2 || (args.size() == 4 && (args[2] == "--update" || args[2] == "--check")))) {
             std::vector<std::string> rest = {args[0]};
@@ -273,7 +293,7 @@ int main(int argc, char** argv) {
         std::cerr << "reference_tool: " << e.what() << "\n";
         return 1;
     }
-    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table|m3-table [--update|--check FILE]\n"
+    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table|m3-table|m4-table [--update|--check FILE]\n"
                  "       reference_tool todo-table m1|m2|m3|m4 [--update|--check FILE]\n";
     return 2;
 }

@@ -99,6 +99,9 @@ struct Judgement {
     // Numbers worth reporting beside the verdict (e.g. the coverage error against the exact
     // area), printed with the checkpoint and kept in its record and the JSON summary.
     std::map<std::string, double> measures;
+    // Pictures the judge made from the artifacts (e.g. a chart of error against run time),
+    // shown beside the checkpoint's own pictures in every report.
+    std::map<std::string, raster::Image> pictures;
 };
 
 // One function a student writes, as the checkpoints see it: its name (as the render half

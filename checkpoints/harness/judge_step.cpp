@@ -313,6 +313,7 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
 
     // Every checkpoint keeps its pictures (the HTML report shows passing ones too).
     for (const auto& [name, img] : student.images) v.pictures[name == "main" ? "actual" : name] = img;
+    for (const auto& [name, img] : judgement.pictures) v.pictures[name] = img;
     if (!expected.empty()) {
         v.pictures["expected"] = expected;
         if (main_it != student.images.end()) {

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "m4/scenes.h"
+#include "raster/plot.h"
 
 namespace m4cp {
 
@@ -472,6 +473,59 @@ const char* picture_topic(const std::string& id) {
     return it == topics.end() ? "pipeline" : it->second;
 }
 
+const char* shade_name(Shade s) {
+    switch (s) {
+        case Shade::kFlat: return "flat";
+        case Shade::kGouraud: return "Gouraud";
+        case Shade::kPerPixel: return "per-pixel";
+        default: return "other";
+    }
+}
+
+// The error-against-run-time checkpoint: every sphere must be as close to the perfect sphere as
+// the reference's (within half a level on average), and the chart of error against time, yours
+// beside the reference's, goes into the report.
+void judge_shading_chart(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref) {
+    const Scene& s = c.s;
+    const auto ref_it = ref.images.find("main");
+    raster::PlotSpec chart;
+    chart.title = "error against run time";
+    chart.x_label = "milliseconds per sphere (64 x 64 pixels), log scale";
+    chart.y_label = "mean error vs the perfect sphere (levels)";
+    chart.log_x = true;
+    const Shade modes[3] = {Shade::kFlat, Shade::kGouraud, Shade::kPerPixel};
+    const Color strong[3] = {{210, 60, 50}, {40, 150, 60}, {50, 90, 210}}, light[3] = {{240, 170, 160}, {160, 215, 170}, {165, 185, 240}};
+    for (int m = 0; m < 3; ++m) {
+        raster::PlotSeries yours{std::string(shade_name(modes[m])) + " (yours)", strong[m], {}, {}};
+        raster::PlotSeries theirs{std::string(shade_name(modes[m])) + " (reference)", light[m], {}, {}};
+        for (std::size_t p = 0; p < s.panels.size(); ++p) {
+            const Panel& panel = s.panels[p];
+            if (panel.shading != modes[m]) continue;
+            const raster::Image truth = analytic_sphere(panel);
+            const double err = panel_error(mine, panel, truth);
+            const double ref_err = ref_it == ref.images.end() ? err : panel_error(ref_it->second, panel, truth);
+            const std::string key = "panel" + std::to_string(p) + ".seconds";
+            const double ms = 1e3 * get(c.mine, key), ref_ms = 1e3 * get(c.ref, key);
+            const std::string what = std::string(shade_name(modes[m])) + ", " + std::to_string(panel.items.empty() ? 0 : panel.items[0].mesh.triangles.size()) + " triangles";
+            c.j.measures["error " + what + " (reference " + num(std::round(ref_err * 100) / 100) + ")"] = std::round(err * 100) / 100;
+            yours.points.push_back({ms, err});
+            theirs.points.push_back({ref_ms, ref_err});
+            const std::string label = std::to_string(panel.items.empty() ? 0 : panel.items[0].mesh.triangles.size());
+            yours.labels.push_back(label);
+            theirs.labels.push_back("");
+            if (err > ref_err + 0.5) {
+                const char* topic = modes[m] == Shade::kFlat ? "flat shading" : modes[m] == Shade::kGouraud ? "gouraud" : "per-pixel normals";
+                c.add(topic, "TODO 9: the " + what + " sphere is " + num(std::round(err * 100) / 100) +
+                                 " levels from the perfect sphere on average, the reference's " +
+                                 num(std::round(ref_err * 100) / 100));
+            }
+        }
+        chart.series.push_back(theirs);
+        chart.series.push_back(yours);
+    }
+    c.j.pictures["error_vs_time"] = raster::plot(chart);
+}
+
 void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, const raster::Image& expected) {
     const Scene& s = c.s;
     const auto main_it = art.images.find("main");
@@ -578,6 +632,16 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             const double ref_err = ref_it == ref.images.end() ? 0 : panel_error(ref_it->second, panel, analytic_sphere(panel));
             c.j.measures["mean error vs the perfect sphere, levels (reference " + num(std::round(ref_err * 100) / 100) + ")"] =
                 std::round(err * 100) / 100;
+            // Lit from the wrong side? The perfect sphere with every directional light reversed.
+            Panel reversed = panel;
+            for (LightSpec& l : reversed.lights) {
+                if (!l.point) l.vector = -l.vector;
+            }
+            if (err > ref_err + 2 && panel_error(*mine, panel, analytic_sphere(reversed)) < err / 2) {
+                c.add("light direction", "TODO 5: your sphere" + where +
+                                             " is lit from the opposite side: L must point from the surface TOWARD the "
+                                             "light, -direction for a directional light");
+            }
         }
         if (s.checks.zfight) {
             long long far_shows = 0;
@@ -588,6 +652,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             c.j.measures[std::string("ms, ") + kFormatNames[int(panel.format)]] = 1e3 * get(c.mine, key + ".seconds");
         }
     }
+    if (s.checks.shading_chart && sized) judge_shading_chart(c, *mine, ref);
     for (const auto& [p, q] : s.checks.same_panels) {
         if (!sized) break;
         const Panel &a = s.panels[std::size_t(p)], &b = s.panels[std::size_t(q)];

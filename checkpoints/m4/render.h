@@ -6,10 +6,13 @@
 #include "harness/checkpoint.h"
 
 namespace m4cp {
+struct Scene;
 namespace student {
 cp::Artifacts render(const std::string& id);
+cp::Artifacts render_scene(const Scene& s);  // a scene that is not in the table (lesson tables)
 }
 namespace reference {
 cp::Artifacts render(const std::string& id);
+cp::Artifacts render_scene(const Scene& s);
 }
 }  // namespace m4cp

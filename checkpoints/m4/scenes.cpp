@@ -50,6 +50,24 @@ Mesh quad_mesh(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Color color) {
     return m;
 }
 
+Panel shading_panel(Shade shading, int segments, int x0, int y0, int size) {
+    Panel p;
+    p.camera.eye = {0.03, 0.05, 3.2};
+    p.camera.target = {0.013, -0.021, 0.007};
+    Item ball;
+    ball.mesh = sphere_mesh(segments, shading != Shade::kFlat);
+    ball.material = {210, 190, 160};
+    p.items = {ball};
+    p.x0 = x0;
+    p.y0 = y0;
+    p.w = p.h = size;
+    p.shading = shading;
+    p.cull = true;
+    p.lights = {{false, {-0.6, -0.7, -1}, {0.6, 0.6, 0.6}}, {true, {2.5, 1.5, 2}, {0.3, 0.3, 0.3}}};
+    p.timed = true;
+    return p;
+}
+
 namespace {
 
 Mesh triangle_mesh(Vec3 a, Vec3 b, Vec3 c, Color color) {
@@ -341,6 +359,19 @@ std::vector<Scene> build() {
         Panel pn = panel(cam({0.03, 0.05, 3.2}), {ball}, 0, 0, 96, 96, Shade::kNormalView);
         pn.cull = true;
         s.panels.push_back(pn);
+        add(s);
+    }
+
+    {
+        Scene s = picture("m4.shading_error_time", "Error against run time: flat, Gouraud, per-pixel on four spheres",
+                          "each sphere's error against a perfect sphere must be as small as the reference's",
+                          {9, 8, 5}, 256, 192);
+        const Shade rows[3] = {Shade::kFlat, Shade::kGouraud, Shade::kPerPixel};
+        for (int r = 0; r < 3; ++r) {
+            for (int k = 0; k < 4; ++k) s.panels.push_back(shading_panel(rows[r], kChartSegments[k], 64 * k, 64 * r, 64));
+        }
+        s.checks.shading_chart = true;
+        s.demo = true;
         add(s);
     }
 

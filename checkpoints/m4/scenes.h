@@ -72,6 +72,7 @@ struct Panel {
     std::vector<LightSpec> lights;
     std::vector<std::vector<int>> frames;
     std::vector<std::array<int, 2>> depth_probes;  // pixels (in the panel) whose keys are read back
+    bool timed = false;  // timed on its own (best of a few runs), for the error-against-time chart
 };
 
 // Number groups: each calls some functions of the milestone on fixed inputs; the judge checks
@@ -84,6 +85,7 @@ struct Checks {
     bool checker_error = false;  // per panel: error against the analytic checkerboard (item 0, a quad)
     bool zfight = false;         // per panel: pixels where the far surface shows
     bool sphere_error = false;   // per panel: error against the analytic sphere (item 0)
+    bool shading_chart = false;  // sphere_error per panel, held to the reference's, and charted against time
 };
 
 struct Scene {
@@ -108,6 +110,12 @@ const Scene& scene(const std::string& id);
 // A UV sphere of radius 1: `segments` around, segments / 2 from pole to pole, with its exact
 // normals when `with_normals` (else the pipeline computes them).
 Mesh sphere_mesh(int segments, bool with_normals);
+// The shading modes and tessellations of the error-against-run-time checkpoint and lesson table:
+// rows flat, Gouraud, per-pixel; columns these segment counts.
+inline constexpr int kChartSegments[4] = {6, 12, 24, 48};
+// One panel of that chart: a unit sphere of `segments` in `shading`, lit by a directional and a
+// point light, `size` pixels square at (x0, y0).
+Panel shading_panel(Shade shading, int segments, int x0, int y0, int size);
 // A quad from its four corners (counter-clockwise seen from its front), uv (0,0), (1,0), (1,1),
 // (0,1) at the corners, in one face color.
 Mesh quad_mesh(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Color color);
