@@ -114,7 +114,7 @@ int text_width(const std::string& text, int scale) {
 void draw_text(Image& img, int x, int y, const std::string& text, Color color, int scale) {
     std::vector<char> s(text.begin(), text.end());
     s.push_back('\0');
-    std::vector<char> buffer(text.size() * 300 + 64);
+    std::vector<char> buffer(text.size() * 1024 + 256);  // a quad is 64 bytes; "8" takes 7
     const int quads = stb_easy_font_print(0, 0, s.data(), nullptr, buffer.data(), static_cast<int>(buffer.size()));
     // Each quad: four vertices of x, y, z (float) and a color (4 bytes); the quads are axis-aligned.
     for (int q = 0; q < quads; ++q) {

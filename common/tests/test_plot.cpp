@@ -50,3 +50,10 @@ TEST_CASE("draw_text writes pixels and never outside the image", "[plot]") {
     CHECK(img.stray_writes() == 0);
     CHECK(raster::text_width("abc") > raster::text_width("a"));
 }
+
+TEST_CASE("draw_text draws every glyph of a long label whole", "[plot]") {
+    raster::Image one(20, 12, {255, 255, 255}), many(200, 12, {255, 255, 255});
+    raster::draw_text(one, 0, 0, "8", {0, 0, 0});
+    raster::draw_text(many, 0, 0, "88888888", {0, 0, 0});
+    CHECK(count_color(many, {0, 0, 0}) == 8 * count_color(one, {0, 0, 0}));
+}
