@@ -121,7 +121,7 @@ void judge_group(Group g, Ctx& c) {
                 if (mine == want) continue;
                 std::string other;
                 for (int f = 0; f < 4; ++f) {
-                    if (f != k.format && mine == trusted_key(f, k.z_ndc, k.w)) other = kFormatNames[f];
+                    if (f != k.format && mine != 0 && mine == trusted_key(f, k.z_ndc, k.w)) other = kFormatNames[f];
                 }
                 const bool big = k.format == 2 || (k.format != 2 && std::abs(mine - want) > 1);
                 if (!big) continue;  // one unit in the last place of a float: rounding
@@ -537,6 +537,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         c.add(topic, "the picture differs from the expected one beyond the tolerance (see diff.png); this scene is "
                      "about: " + s.hint);
     }
+    std::map<std::string, std::pair<double, double>> totals;  // per count: yours, the reference's (all panels)
     for (std::size_t p = 0; p < s.panels.size(); ++p) {
         const Panel& panel = s.panels[p];
         const std::string key = "panel" + std::to_string(p);
@@ -569,7 +570,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         for (const auto& st : kStats) {
             const std::string k = key + ".stats." + st[0];
             const double a = get(c.mine, k), b = get(c.ref, k);
-            if (a != 0 || b != 0) c.j.measures[std::string(st[0]) + where + " (reference " + num(b) + ")"] = a;
+            totals[st[0]].first += a;
+            totals[st[0]].second += b;
             const std::string name = st[0];
             const bool per_triangle = name.rfind("triangles", 0) == 0 || name == "vertex_normals";
             bool ok;
@@ -651,6 +653,10 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             c.j.measures[std::string("z-fighting pixels, ") + kFormatNames[int(panel.format)]] = double(far_shows);
             c.j.measures[std::string("ms, ") + kFormatNames[int(panel.format)]] = 1e3 * get(c.mine, key + ".seconds");
         }
+    }
+    // The report prints every count that is not zero, summed over the panels.
+    for (const auto& [name, t] : totals) {
+        if (t.first != 0 || t.second != 0) c.j.measures[name + " (reference " + num(t.second) + ")"] = t.first;
     }
     if (s.checks.shading_chart && sized) judge_shading_chart(c, *mine, ref);
     for (const auto& [p, q] : s.checks.same_panels) {
