@@ -11,6 +11,7 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <set>
 #include <sstream>
 
 #include "m4/scenes.h"
@@ -328,6 +329,29 @@ void judge_group(Group g, Ctx& c) {
             }
             break;
         }
+    }
+}
+
+// The probes of a scene variant (render.cpp, probes()): "probe.<topic>.<name>[.<component>]",
+// each compared with the reference's on the same inputs; one finding per name. Colors (debug
+// views) may differ by one level (rounding of an exact half), numbers by 1e-9 relative.
+void judge_probes(Ctx& c) {
+    std::set<std::string> reported;
+    for (const auto& [key, ref] : c.ref) {
+        if (key.rfind("probe.", 0) != 0) continue;
+        const auto topic_end = key.find('.', 6);
+        if (topic_end == std::string::npos) continue;
+        const auto name_end = key.find('.', topic_end + 1);
+        const std::string name = key.substr(0, name_end);
+        std::string topic = key.substr(6, topic_end - 6);
+        std::replace(topic.begin(), topic.end(), '_', ' ');
+        const double mine = get(c.mine, key);
+        const bool ok = topic == "debug view" ? std::abs(mine - ref) <= 1 : close(mine, ref, 1e-9);
+        if (reported.count(name) || ok) continue;
+        reported.insert(name);
+        c.add(topic, "on inputs drawn for this grading (not the lesson's), " + name.substr(topic_end + 1) + " gave " +
+                         num(mine) + " where the reference gives " + num(ref) + " (" + key.substr(6) +
+                         "): the function must work for any input, not only the public ones");
     }
 }
 
@@ -689,6 +713,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
                                 " write(s) outside the image: clamp the bounding box to the image");
     }
     for (Group g : s.groups) judge_group(g, c);
+    judge_probes(c);
     if (!s.panels.empty()) judge_picture(c, artifacts, reference, expected);
     return j;
 }

@@ -8,6 +8,7 @@
 #include "depth_lighting.h"
 #include "m4/scenes.h"
 #include "raster/timer.h"
+#include "variant_random.h"
 
 namespace m4cp {
 namespace RASTER_FLAVOUR {
@@ -180,6 +181,64 @@ void numbers(Group g, Values& v) {
     }
 }
 
+// Under a scene variant (grading), the number checkpoints whose public inputs stay fixed also
+// call their functions on inputs drawn from the seed, stored as "probe.<topic>.<name>"; the judge
+// compares each with the reference's result on the same inputs, so answers learned for the
+// public inputs do not pass.
+void probes(Group g, Values& v) {
+    cp::VariantRng rng(variant_seed(), "m4.probes");
+    auto real = [&rng](int lo, int hi, double scale) { return rng.uniform(lo, hi) / scale; };
+    auto color = [&rng] {
+        return Color{static_cast<std::uint8_t>(rng.uniform(0, 255)), static_cast<std::uint8_t>(rng.uniform(0, 255)),
+                     static_cast<std::uint8_t>(rng.uniform(0, 255))};
+    };
+    switch (g) {
+        case Group::kDepthTest:
+            for (int i = 0; i < 12; ++i) {
+                // Keys close together (ties are common), colors that often share channels.
+                const std::uint32_t a = std::uint32_t(rng.uniform(0, 3)), b = std::uint32_t(rng.uniform(0, 3));
+                Color c = color(), t = color();
+                if (rng.coin()) t.r = c.r;
+                if (rng.coin()) t.g = c.g;
+                v["probe.depth_test.case" + std::to_string(i)] = CALL("depth_passes", m4::depth_passes(a, c, b, t));
+            }
+            break;
+        case Group::kWeights:
+            for (int i = 0; i < 6; ++i) {
+                const double l0 = real(0, 1000, 1000), l1 = real(0, 1000, 1000) * (1 - l0);
+                const std::array<double, 3> l = {l0, l1, 1 - l0 - l1};
+                const std::array<double, 3> w = {real(10, 50000, 1000), real(10, 50000, 1000), real(10, 50000, 1000)};
+                const auto p = CALL("perspective_weights", m4::perspective_weights(l, w));
+                for (int k = 0; k < 3; ++k) v["probe.perspective.w" + std::to_string(i) + "." + std::to_string(k)] = p[k];
+            }
+            break;
+        case Group::kNormals: {
+            auto point = [&] { return Vec3{real(-300, 300, 100), real(-300, 300, 100), real(-300, 300, 100)}; };
+            for (int i = 0; i < 4; ++i) {
+                put(v, "probe.normals.face" + std::to_string(i), CALL("face_normal", m4::face_normal(point(), point(), point())));
+            }
+            std::vector<Vec3> pos;
+            for (int i = 0; i < 5; ++i) pos.push_back(point());
+            const std::vector<std::array<int, 3>> tris = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {1, 4, 2}};
+            const auto vn = CALL("vertex_normals", m4::vertex_normals(pos, tris));
+            for (std::size_t i = 0; i < vn.size() && i < 5; ++i) put(v, "probe.normals.vertex" + std::to_string(i), vn[i]);
+            const Mat4 model = m3::translate(point()) * m3::rotate(point(), real(-300, 300, 100)) *
+                               m3::scale({real(20, 300, 100), real(20, 300, 100), real(20, 300, 100)});
+            put(v, "probe.normal_matrix.nm", CALL("normal_matrix", m4::normal_matrix(model)));
+            break;
+        }
+        case Group::kDebugColors:
+            for (int i = 0; i < 6; ++i) {
+                put(v, "probe.debug_view.gray" + std::to_string(i), CALL("depth_gray", m4::depth_gray(real(-1200, 1200, 1000))));
+                const Vec3 n{real(-100, 100, 37), real(-100, 100, 37), real(-100, 100, 37)};
+                put(v, "probe.debug_view.normal" + std::to_string(i), CALL("normal_color", m4::normal_color(n)));
+            }
+            break;
+        default:
+            break;  // their public inputs already vary (scenes.cpp), or there is nothing to vary
+    }
+}
+
 void add_stats(m4::Stats& total, const m4::Stats& st) {
     total.triangles_clipped += st.triangles_clipped;
     total.triangles_culled += st.triangles_culled;
@@ -282,7 +341,10 @@ cp::Artifacts render(const std::string& id) { return render_scene(scene(id)); }
 cp::Artifacts render_scene(const Scene& s) {
     return cp::render_guarded(s.width, s.height, [&](raster::Image& img, cp::Artifacts& out) {
         g_out = &out;
-        for (Group g : s.groups) numbers(g, out.values);
+        for (Group g : s.groups) {
+            numbers(g, out.values);
+            if (variant_seed() != 0) probes(g, out.values);
+        }
         if (!s.panels.empty()) draw_panels(s, img, out);
     });
 }
