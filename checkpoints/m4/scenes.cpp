@@ -444,11 +444,14 @@ std::vector<Scene> build() {
                           {9, 7, 8}, 96, 96);
         const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
         Mesh m;
+        // The good triangle has vertices of its own: a vertex shared with a non-finite triangle
+        // would get a non-finite normal sum, hence the zero normal (ambient only), by the rule.
         m.positions = {{-1.2, -1.0, 0}, {1.3, -1.1, 0}, {0.1, 1.2, 0},  // good
                        {nan, 0, 0},     {0.5, 0.5, 0},  {inf, 1, 0},     // non-finite
                        {1e30, -1, 0.2}, {-1e30, 1e29, 0.1}, {0.3, 1e31, -0.2},  // huge
-                       {0.4, 0.3, 1e300}, {-0.4, 0.2, -1e300}};  // far beyond both planes
-        m.triangles = {{0, 1, 2}, {3, 4, 0}, {5, 1, 4}, {6, 7, 8}, {9, 10, 2}, {0, 1, 40}, {-3, 1, 2}};
+                       {0.4, 0.3, 1e300}, {-0.4, 0.2, -1e300},  // far beyond both planes
+                       {-1.2, -1.0, 0}, {1.3, -1.1, 0}, {0.1, 1.2, 0}};  // the good ones again
+        m.triangles = {{0, 1, 2}, {3, 4, 11}, {5, 12, 4}, {6, 7, 8}, {9, 10, 13}, {0, 1, 40}, {-3, 1, 2}};
         m.face_colors.assign(m.triangles.size(), kGreen);
         Panel pn = panel(cam({0.02, 0.03, 4}), {item(m)}, 0, 0, 96, 96, Shade::kPerPixel);
         pn.lights = {directional({-0.3, -0.4, -1}), point({0.5, 0.5, 2})};
