@@ -163,7 +163,7 @@ Color to_color(Vec3 levels) {
     // BEGIN SOLUTION
     auto channel = [](double v) -> std::uint8_t {
         if (std::isnan(v)) return 0;
-        return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 255.0)));
+        return static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0) + 0.5);  // rounds to nearest: v >= 0 here
     };
     return {channel(levels.x), channel(levels.y), channel(levels.z)};
     // SKELETON: return {};
@@ -319,7 +319,9 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
     const Shading mode = state.needs.shading;
     const int attributes = attribute_count(state);
     const double inv_area = 1.0 / static_cast<double>(area2);
-    const std::array<double, 3> w = {a0.w, a1.w, a2.w};
+    // 1 / w of each vertex, once per triangle: a pixel's perspective weights (the formula of
+    // perspective_weights) then cost one division instead of six.
+    const double iw0 = 1 / a0.w, iw1 = 1 / a1.w, iw2 = 1 / a2.w;
     const double z0 = a0.screen.z, z1 = a1.screen.z, z2 = a2.screen.z;
 
     for (int y = box.y0; y < box.y1; ++y) {
@@ -331,17 +333,19 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
             const std::array<double, 3> l = {double(e1) * inv_area, double(e2) * inv_area, double(e0) * inv_area};
             const double z = l[0] * z0 + l[1] * z1 + l[2] * z2;
             const std::size_t at = static_cast<std::size_t>(y) * img.width() + x;
+            const double q0 = l[0] * iw0, q1 = l[1] * iw1, q2 = l[2] * iw2;
+            const double w_here = 1 / (q0 + q1 + q2);  // the clip-space w of this pixel
             std::uint32_t key = 0;
             if (test) {
                 ++stats.depth_tests;
-                const double inv_w = l[0] / w[0] + l[1] / w[1] + l[2] / w[2];
-                key = depth_key(frame.format, z, 1 / inv_w);
+                key = depth_key(frame.format, z, w_here);
                 if (key > frame.depth[at] || key == kClearKey) continue;  // hidden: no color needed
             }
             Color c = state.flat_color;
             if (attributes > 0) {
                 stats.interpolated += attributes;
-                const std::array<double, 3> p = state.needs.perspective_correct ? perspective_weights(l, w) : l;
+                const std::array<double, 3> p =
+                    state.needs.perspective_correct ? std::array<double, 3>{q0 * w_here, q1 * w_here, q2 * w_here} : l;
                 auto mix3 = [&p](Vec3 q0, Vec3 q1, Vec3 q2) { return q0 * p[0] + q1 * p[1] + q2 * p[2]; };
                 switch (mode) {
                     case Shading::kVertexColor:
@@ -363,7 +367,8 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
                 c = depth_gray(z);
             }
             if (test) {
-                if (!depth_passes(key, c, frame.depth[at], img.at(x, y))) continue;
+                // Nearer keys were let through above; only an exact tie needs the stored color.
+                if (key == frame.depth[at] && !depth_passes(key, c, frame.depth[at], img.at(x, y))) continue;
                 frame.depth[at] = key;
                 ++stats.depth_writes;
             }
@@ -424,22 +429,25 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
     state.point_light = point_light;
     const int width = frame.color.width(), height = frame.color.height();
     auto finite = [](Vec4 c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w); };
-    std::vector<ClipVertex> poly;
+    std::vector<ClipVertex> poly;          // a clipped triangle's polygon
+    std::vector<const ClipVertex*> fan;    // the polygon to fan: the three vertices, or poly's
     for (std::size_t face = 0; face < mesh.triangles.size(); ++face) {
         const auto& t = mesh.triangles[face];
         if (t[0] < 0 || t[0] >= n || t[1] < 0 || t[1] >= n || t[2] < 0 || t[2] >= n) continue;
         const ClipVertex &c0 = verts[t[0]], &c1 = verts[t[1]], &c2 = verts[t[2]];
         if (!finite(c0.clip) || !finite(c1.clip) || !finite(c2.clip)) continue;
+        fan.clear();
         if (inside(c0.clip) && inside(c1.clip) && inside(c2.clip)) {
-            poly.assign({c0, c1, c2});
+            fan = {&c0, &c1, &c2};
         } else {
             ++stats.triangles_clipped;
             poly = clip_triangle({c0, c1, c2});
+            for (const ClipVertex& p : poly) fan.push_back(&p);
         }
         bool colored = false;
-        for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
+        for (std::size_t i = 1; i + 1 < fan.size(); ++i) {
             std::array<ScreenVertex, 3> s;
-            const ClipVertex* src[3] = {&poly[0], &poly[i], &poly[i + 1]};
+            const ClipVertex* src[3] = {fan[0], fan[i], fan[i + 1]};
             for (int k = 0; k < 3; ++k) {
                 s[k] = {m3::to_screen(src[k]->clip, width, height), src[k]->clip.w, src[k]->color, src[k]->normal,
                         src[k]->world, src[k]->uv};
