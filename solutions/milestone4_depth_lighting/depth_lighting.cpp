@@ -428,33 +428,35 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
     state.material = material;
     state.point_light = point_light;
     const int width = frame.color.width(), height = frame.color.height();
-    auto finite = [](Vec4 c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w); };
-    std::vector<ClipVertex> poly;          // a clipped triangle's polygon
-    std::vector<const ClipVertex*> fan;    // the polygon to fan: the three vertices, or poly's
+    // Per position, once: where it lies (inside the view volume, outside, or not finite) and,
+    // inside, its screen position; a triangle that needs no clipping reuses them.
+    enum Where : unsigned char { kInside, kOutside, kNotFinite };
+    std::vector<Where> where(n);
+    std::vector<Vec3> screen(n);
+    for (int i = 0; i < n; ++i) {
+        const Vec4 c = verts[i].clip;
+        if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
+            where[i] = kNotFinite;
+        } else if (inside(c)) {
+            where[i] = kInside;
+            screen[i] = m3::to_screen(c, width, height);
+        } else {
+            where[i] = kOutside;
+        }
+    }
+
+    std::vector<ClipVertex> poly;  // a clipped triangle's polygon
     for (std::size_t face = 0; face < mesh.triangles.size(); ++face) {
         const auto& t = mesh.triangles[face];
         if (t[0] < 0 || t[0] >= n || t[1] < 0 || t[1] >= n || t[2] < 0 || t[2] >= n) continue;
+        if (where[t[0]] == kNotFinite || where[t[1]] == kNotFinite || where[t[2]] == kNotFinite) continue;
         const ClipVertex &c0 = verts[t[0]], &c1 = verts[t[1]], &c2 = verts[t[2]];
-        if (!finite(c0.clip) || !finite(c1.clip) || !finite(c2.clip)) continue;
-        fan.clear();
-        if (inside(c0.clip) && inside(c1.clip) && inside(c2.clip)) {
-            fan = {&c0, &c1, &c2};
-        } else {
-            ++stats.triangles_clipped;
-            poly = clip_triangle({c0, c1, c2});
-            for (const ClipVertex& p : poly) fan.push_back(&p);
-        }
         bool colored = false;
-        for (std::size_t i = 1; i + 1 < fan.size(); ++i) {
-            std::array<ScreenVertex, 3> s;
-            const ClipVertex* src[3] = {fan[0], fan[i], fan[i + 1]};
-            for (int k = 0; k < 3; ++k) {
-                s[k] = {m3::to_screen(src[k]->clip, width, height), src[k]->clip.w, src[k]->color, src[k]->normal,
-                        src[k]->world, src[k]->uv};
-            }
-            if (needs.cull && m3::is_back_facing(s[0].screen, s[1].screen, s[2].screen)) {
+        // One triangle of the fan: cull it, or color it (the first time) and fill it.
+        auto draw = [&](const ClipVertex* const src[3], const Vec3 scr[3]) {
+            if (needs.cull && m3::is_back_facing(scr[0], scr[1], scr[2])) {
                 ++stats.triangles_culled;
-                continue;
+                return;
             }
             if (!colored) {
                 colored = true;
@@ -466,8 +468,26 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
                     state.flat_color = to_color(shade(lighting, material, centroid, face_normal(c0.world, c1.world, c2.world)));
                 }
             }
+            std::array<ScreenVertex, 3> s;
+            for (int k = 0; k < 3; ++k) {
+                s[k] = {scr[k], src[k]->clip.w, src[k]->color, src[k]->normal, src[k]->world, src[k]->uv};
+            }
             fill_triangle(frame, s, state, stats);
             ++stats.triangles_drawn;
+        };
+        if (where[t[0]] == kInside && where[t[1]] == kInside && where[t[2]] == kInside) {
+            const ClipVertex* src[3] = {&c0, &c1, &c2};
+            const Vec3 scr[3] = {screen[t[0]], screen[t[1]], screen[t[2]]};
+            draw(src, scr);
+            continue;
+        }
+        ++stats.triangles_clipped;
+        poly = clip_triangle({c0, c1, c2});
+        for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
+            const ClipVertex* src[3] = {&poly[0], &poly[i], &poly[i + 1]};
+            const Vec3 scr[3] = {m3::to_screen(poly[0].clip, width, height), m3::to_screen(poly[i].clip, width, height),
+                                 m3::to_screen(poly[i + 1].clip, width, height)};
+            draw(src, scr);
         }
     }
     // END SOLUTION
