@@ -68,8 +68,9 @@
 //    point light), none otherwise. Depth is not counted as an attribute.
 //
 //  * Precision. Everything is double until a key or a color is stored. Pictures allow pixels
-//    next to an edge (and next to a change of shade) to differ a little; lighting levels are
-//    compared within 1 level; depth keys of the float formats within 1 unit in the last place.
+//    next to an edge (and next to a change of shade) to differ a little, and lit pixels by up
+//    to 3 levels per channel; shade() values are compared within 1e-9 relative and debug colors
+//    within 1 level; depth_key of the float formats within 1 unit in the last place.
 //    Nothing is timed.
 //
 //  * Bad input never crashes, hangs or writes outside the image: a vertex with NaN or
