@@ -124,7 +124,6 @@ Vec3 to_screen(Vec4 clip, int width, int height) {
 
 // ---- TODO 7: clipping ----
 
-
 std::vector<Vec4> clip_polygon(const std::vector<Vec4>& poly) {
     // TODO 7a: for each plane, walk the edges (a, b) of the current polygon: keep a if it is
     // inside, and add the crossing point when a and b are on different sides.
@@ -161,7 +160,6 @@ std::vector<int> painter_order(const std::vector<std::array<Vec3, 3>>& view_tria
 }
 
 // ---- TODO 11: the pipeline ----
-
 
 Stats draw_model(Image& img, const Model& model, const Mat4& model_matrix, const Mat4& view,
                  const Mat4& projection, const Needs& needs, Color line_color) {

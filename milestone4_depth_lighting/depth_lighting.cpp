@@ -43,7 +43,6 @@ std::array<double, 3> perspective_weights(const std::array<double, 3>& screen, c
 
 // ---- TODO 4: normals ----
 
-
 Vec3 face_normal(Vec3 p0, Vec3 p1, Vec3 p2) {
     // TODO 4a: the normalized cross product of two edges; zero for a degenerate triangle.
     return {};
@@ -94,7 +93,6 @@ ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
     return r;
 }
 
-
 std::vector<ClipVertex> clip_triangle(const std::array<ClipVertex, 3>& triangle) {
     // TODO 7b: milestone 3's Sutherland-Hodgman loop over the six planes, with lerp() making
     // the new vertices.
@@ -103,7 +101,6 @@ std::vector<ClipVertex> clip_triangle(const std::array<ClipVertex, 3>& triangle)
 }
 
 // ---- TODO 8: the triangle with depth and attributes ----
-
 
 void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const FillState& state, Stats& stats) {
     // TODO 8: milestone 2's fill_triangle_gradient, extended: snap, orient (swapping the whole

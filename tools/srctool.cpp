@@ -92,6 +92,9 @@ std::string strip_solutions(const std::vector<std::string>& lines, const std::st
                 t.rfind(stub, 0) == 0) {
                 throw std::runtime_error(where + "marker is not alone on its line or is outside a region");
             }
+            // A region that left nothing behind would leave two blank lines where the
+            // solution had one on each side of it: the skeleton keeps one.
+            if (keep_skeleton_lines && t.empty() && !out.empty() && trim_left(out.back()).empty()) continue;
             out.push_back(lines[i]);
         }
     }

@@ -19,10 +19,11 @@ inline namespace RASTER_FLAVOUR {
 
 // ---- TODO 1: depth keys ----
 
-std::uint32_t depth_key(DepthFormat format, double z_ndc, double w) {
-    // TODO 1: NaN gives kClearKey; clamp d (or (1 - z_ndc) / 2) to [0, 1]; then each format as
-    // depth_lighting.h describes it. std::bit_cast<std::uint32_t>(float_value) gives the bits.
-    // BEGIN SOLUTION
+// BEGIN SOLUTION
+namespace {
+
+// depth_key's body, inline: fill_triangle calls it for every fragment.
+inline std::uint32_t key_of(DepthFormat format, double z_ndc, double w) {
     if (std::isnan(z_ndc)) return kClearKey;
     const double d = std::clamp((z_ndc + 1) / 2, 0.0, 1.0);
     switch (format) {
@@ -39,6 +40,16 @@ std::uint32_t depth_key(DepthFormat format, double z_ndc, double w) {
             return kReversedBase - std::bit_cast<std::uint32_t>(static_cast<float>(1 / w));
     }
     return kClearKey;
+}
+
+}  // namespace
+// END SOLUTION
+
+std::uint32_t depth_key(DepthFormat format, double z_ndc, double w) {
+    // TODO 1: NaN gives kClearKey; clamp d (or (1 - z_ndc) / 2) to [0, 1]; then each format as
+    // depth_lighting.h describes it. std::bit_cast<std::uint32_t>(float_value) gives the bits.
+    // BEGIN SOLUTION
+    return key_of(format, z_ndc, w);
     // SKELETON: return 0;
     // END SOLUTION
 }
@@ -158,14 +169,24 @@ Vec3 shade(const Lighting& lighting, Color base, Vec3 position, Vec3 normal) {
     return levels;
 }
 
+// BEGIN SOLUTION
+namespace {
+
+// One channel of to_color, inline for the fill loop: clamp to [0, 255], then round to
+// nearest (the value is >= 0 by then). A NaN fails `v > 0` and gives 0.
+inline std::uint8_t channel(double v) {
+    return v > 0 ? static_cast<std::uint8_t>((v < 255 ? v : 255) + 0.5) : 0;
+}
+
+inline Color color_of(Vec3 levels) { return {channel(levels.x), channel(levels.y), channel(levels.z)}; }
+
+}  // namespace
+// END SOLUTION
+
 Color to_color(Vec3 levels) {
     // TODO 5b: clamp each channel to [0, 255] BEFORE converting to an 8-bit channel.
     // BEGIN SOLUTION
-    auto channel = [](double v) -> std::uint8_t {
-        if (std::isnan(v)) return 0;
-        return static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0) + 0.5);  // rounds to nearest: v >= 0 here
-    };
-    return {channel(levels.x), channel(levels.y), channel(levels.z)};
+    return color_of(levels);
     // SKELETON: return {};
     // END SOLUTION
 }
@@ -316,49 +337,58 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
     }
 
     const bool test = state.needs.depth_test && frame.depth.size() == static_cast<std::size_t>(img.width()) * img.height();
+    std::uint32_t* const depth = test ? frame.depth.data() : nullptr;
+    const DepthFormat format = frame.format;
     const Shading mode = state.needs.shading;
     const int attributes = attribute_count(state);
+    const bool perspective = state.needs.perspective_correct;
     const double inv_area = 1.0 / static_cast<double>(area2);
     // 1 / w of each vertex, once per triangle: a pixel's perspective weights (the formula of
     // perspective_weights) then cost one division instead of six.
     const double iw0 = 1 / a0.w, iw1 = 1 / a1.w, iw2 = 1 / a2.w;
     const double z0 = a0.screen.z, z1 = a1.screen.z, z2 = a2.screen.z;
+    // The counts stay in registers while the loop runs and go into `stats` at the end.
+    long long fragments = 0, tests = 0, writes = 0, shaded = 0;
 
     for (int y = box.y0; y < box.y1; ++y) {
         std::int64_t e0 = row[0], e1 = row[1], e2 = row[2];
-        for (int x = box.x0; x < box.x1; ++x, e0 += step_x[0], e1 += step_x[1], e2 += step_x[2]) {
+        std::size_t at = static_cast<std::size_t>(y) * img.width() + box.x0;
+        for (int x = box.x0; x < box.x1; ++x, ++at, e0 += step_x[0], e1 += step_x[1], e2 += step_x[2]) {
             if (e0 < bias[0] || e1 < bias[1] || e2 < bias[2]) continue;
-            ++stats.fragments;
-            // e1 is opposite vertex 0, e2 opposite vertex 1, e0 opposite vertex 2.
-            const std::array<double, 3> l = {double(e1) * inv_area, double(e2) * inv_area, double(e0) * inv_area};
-            const double z = l[0] * z0 + l[1] * z1 + l[2] * z2;
-            const std::size_t at = static_cast<std::size_t>(y) * img.width() + x;
-            const double q0 = l[0] * iw0, q1 = l[1] * iw1, q2 = l[2] * iw2;
-            const double w_here = 1 / (q0 + q1 + q2);  // the clip-space w of this pixel
+            ++fragments;
+            // The screen weights, straight from the exact integer edge values (e1 is opposite
+            // vertex 0, e2 opposite vertex 1, e0 opposite vertex 2): every triangle that
+            // covers this pixel computes the same depth here, whatever its bounding box.
+            const double l0 = double(e1) * inv_area, l1 = double(e2) * inv_area, l2 = double(e0) * inv_area;
+            const double z = l0 * z0 + l1 * z1 + l2 * z2;
+            const double q0 = l0 * iw0, q1 = l1 * iw1, q2 = l2 * iw2;
             std::uint32_t key = 0;
             if (test) {
-                ++stats.depth_tests;
-                key = depth_key(frame.format, z, w_here);
-                if (key > frame.depth[at] || key == kClearKey) continue;  // hidden: no color needed
+                ++tests;
+                // Only the 1/w format reads the pixel's w; the others skip the division.
+                key = key_of(format, z, format == DepthFormat::kInverseW ? 1 / (q0 + q1 + q2) : 1.0);
+                if (key > depth[at] || key == kClearKey) continue;  // hidden: no color needed
             }
             Color c = state.flat_color;
             if (attributes > 0) {
-                stats.interpolated += attributes;
-                const std::array<double, 3> p =
-                    state.needs.perspective_correct ? std::array<double, 3>{q0 * w_here, q1 * w_here, q2 * w_here} : l;
-                auto mix3 = [&p](Vec3 q0, Vec3 q1, Vec3 q2) { return q0 * p[0] + q1 * p[1] + q2 * p[2]; };
+                shaded += attributes;
+                double p0 = l0, p1 = l1, p2 = l2;
+                if (perspective) {
+                    const double w_here = 1 / (q0 + q1 + q2);  // the clip-space w of this pixel
+                    p0 = q0 * w_here, p1 = q1 * w_here, p2 = q2 * w_here;
+                }
+                auto mix3 = [&](Vec3 v0, Vec3 v1, Vec3 v2) { return v0 * p0 + v1 * p1 + v2 * p2; };
                 switch (mode) {
                     case Shading::kVertexColor:
-                    case Shading::kGouraud: c = to_color(mix3(a0.color, a1.color, a2.color)); break;
+                    case Shading::kGouraud: c = color_of(mix3(a0.color, a1.color, a2.color)); break;
                     case Shading::kNormalView: c = normal_color(mix3(a0.normal, a1.normal, a2.normal)); break;
                     case Shading::kChecker:
-                        c = checker({a0.uv.x * p[0] + a1.uv.x * p[1] + a2.uv.x * p[2],
-                                     a0.uv.y * p[0] + a1.uv.y * p[1] + a2.uv.y * p[2]});
+                        c = checker({a0.uv.x * p0 + a1.uv.x * p1 + a2.uv.x * p2, a0.uv.y * p0 + a1.uv.y * p1 + a2.uv.y * p2});
                         break;
                     case Shading::kPerPixel: {
                         const Vec3 world = state.point_light ? mix3(a0.world, a1.world, a2.world) : Vec3{};
                         ++stats.shade_calls;
-                        c = to_color(shade(*state.lighting, state.material, world, mix3(a0.normal, a1.normal, a2.normal)));
+                        c = color_of(shade(*state.lighting, state.material, world, mix3(a0.normal, a1.normal, a2.normal)));
                         break;
                     }
                     default: break;
@@ -368,18 +398,67 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
             }
             if (test) {
                 // Nearer keys were let through above; only an exact tie needs the stored color.
-                if (key == frame.depth[at] && !depth_passes(key, c, frame.depth[at], img.at(x, y))) continue;
-                frame.depth[at] = key;
-                ++stats.depth_writes;
+                if (key == depth[at] && !depth_passes(key, c, depth[at], img.at(x, y))) continue;
+                depth[at] = key;
+                ++writes;
             }
             img.set(x, y, c);
         }
         for (int i = 0; i < 3; ++i) row[i] += step_y[i];
     }
+    stats.fragments += fragments;
+    stats.depth_tests += tests;
+    stats.depth_writes += writes;
+    stats.interpolated += shaded;
     // END SOLUTION
 }
 
 // ---- TODO 9: the pipeline ----
+
+// BEGIN SOLUTION
+namespace {
+
+// m3's Mat4 * Vec4 (the same sums in the same order, so the same bits), inline for the loop
+// over positions, where a call per product would cost as much as the product.
+inline Vec4 times(const Mat4& a, Vec4 v) {
+    const double in[4] = {v.x, v.y, v.z, v.w};
+    double out[4] = {};
+    for (int r = 0; r < 4; ++r) {
+        for (int c = 0; c < 4; ++c) out[r] += a.m[r][c] * in[c];
+    }
+    return {out[0], out[1], out[2], out[3]};
+}
+
+// Where a position lies after step 1.
+enum class Where : unsigned char { kInside, kOutside, kNotFinite };
+
+// Step 1's results, one array per quantity, filled only with what the mode reads. They live
+// from call to call (one set per thread): a renderer draws the same mesh frame after frame,
+// and reusing the arrays spares it allocating, and the system zeroing, megabytes per frame.
+struct PerPosition {
+    std::vector<Where> where;
+    std::vector<Vec3> screen;  // m3::to_screen of the inside positions
+    std::vector<double> w;     // clip-space w
+    std::vector<Vec3> color, normal, world;
+};
+
+// True when no pixel center can be inside the triangle: its bounding box, widened by the
+// largest move snapping makes, holds none (milestone 2's box would then be empty).
+inline bool misses_every_center(Vec3 a, Vec3 b, Vec3 c) {
+    constexpr double slack = 1.0 / m2::kSubpixelSteps;
+    const double x0 = std::min({a.x, b.x, c.x}) - slack, x1 = std::max({a.x, b.x, c.x}) + slack;
+    const double y0 = std::min({a.y, b.y, c.y}) - slack, y1 = std::max({a.y, b.y, c.y}) + slack;
+    return std::floor(x1 - 0.5) < std::ceil(x0 - 0.5) || std::floor(y1 - 0.5) < std::ceil(y0 - 0.5);
+}
+
+PerPosition& per_position_arrays() {
+    thread_local PerPosition arrays;
+    return arrays;
+}
+
+}  // namespace
+// END SOLUTION
+
 
 Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& view, const Mat4& projection,
                 const Lighting& lighting, Color material, const Needs& needs) {
@@ -388,73 +467,98 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
     // BEGIN SOLUTION
     const int n = static_cast<int>(mesh.positions.size());
     const Shading mode = needs.shading;
-    const bool lit = mode == Shading::kFlat || mode == Shading::kGouraud || mode == Shading::kPerPixel;
-    const bool vertex_normals_needed = mode == Shading::kGouraud || mode == Shading::kPerPixel || mode == Shading::kNormalView;
     bool point_light = false;
     for (const Light& l : lighting.lights) point_light |= l.kind == Light::Kind::kPoint;
+    // What this mode reads, and nothing more: normals for the modes that light or show them
+    // per position, world positions where a point light or a face normal needs them, a color
+    // per position for kGouraud and kVertexColor.
+    const bool want_normals = mode == Shading::kGouraud || mode == Shading::kPerPixel || mode == Shading::kNormalView;
+    const bool want_world = mode == Shading::kFlat || (point_light && (mode == Shading::kGouraud || mode == Shading::kPerPixel));
+    const bool want_color = mode == Shading::kGouraud || mode == Shading::kVertexColor;
+    const bool want_uv = mode == Shading::kChecker;
 
     const Mat4 mvp = projection * (view * model);
-    std::vector<ClipVertex> verts(n);
-    std::vector<Vec3> normals;
-    if (vertex_normals_needed) {
-        if (mesh.normals.size() == mesh.positions.size()) {
-            normals = mesh.normals;
-        } else {
-            normals = vertex_normals(mesh.positions, mesh.triangles);
-            stats.vertex_normals += n;
-        }
-    }
-    const Mat4 to_world_normal = vertex_normals_needed ? normal_matrix(model) : Mat4{};
-    for (int i = 0; i < n; ++i) {
-        ClipVertex& cv = verts[i];
-        const Vec3 p = mesh.positions[i];
-        cv.clip = mvp * raster::point(p);
-        if (lit) cv.world = m3::transform_point(model, p);
-        if (vertex_normals_needed) cv.normal = unit_or_zero(m3::transform_direction(to_world_normal, normals[i]));
-        if (mode == Shading::kVertexColor && i < static_cast<int>(mesh.vertex_colors.size())) {
-            const Color c = mesh.vertex_colors[i];
-            cv.color = {double(c.r), double(c.g), double(c.b)};
-        }
-        if (mode == Shading::kGouraud) {
-            cv.color = shade(lighting, material, cv.world, cv.normal);
-            ++stats.shade_calls;
-        }
-        if (mode == Shading::kChecker && i < static_cast<int>(mesh.uvs.size())) cv.uv = mesh.uvs[i];
+    const Mat4 to_world_normal = want_normals ? normal_matrix(model) : Mat4{};
+    std::vector<Vec3> computed_normals;
+    const std::vector<Vec3>* model_normals = &mesh.normals;
+    if (want_normals && mesh.normals.size() != mesh.positions.size()) {
+        computed_normals = vertex_normals(mesh.positions, mesh.triangles);
+        stats.vertex_normals += n;
+        model_normals = &computed_normals;
     }
 
+    // Step 1: every position once.
+    PerPosition& pp = per_position_arrays();
+    pp.where.resize(n);
+    pp.screen.resize(n);
+    pp.w.resize(n);
+    pp.color.resize(want_color ? n : 0);
+    pp.normal.resize(want_normals ? n : 0);
+    pp.world.resize(want_world ? n : 0);
+    const int width = frame.color.width(), height = frame.color.height();
+    auto clip_of = [&](int i) { return times(mvp, raster::point(mesh.positions[i])); };
+    for (int i = 0; i < n; ++i) {
+        const Vec3 p = mesh.positions[i];
+        const Vec4 c = clip_of(i);
+        pp.w[i] = c.w;
+        if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
+            pp.where[i] = Where::kNotFinite;
+        } else if (inside(c)) {
+            pp.where[i] = Where::kInside;
+            pp.screen[i] = m3::to_screen(c, width, height);
+        } else {
+            pp.where[i] = Where::kOutside;
+        }
+        if (want_world) pp.world[i] = raster::xyz(times(model, raster::point(p)));
+        if (want_normals) {
+            pp.normal[i] = unit_or_zero(raster::xyz(times(to_world_normal, raster::direction((*model_normals)[i]))));
+        }
+        if (mode == Shading::kVertexColor) {
+            const Color vc = i < static_cast<int>(mesh.vertex_colors.size()) ? mesh.vertex_colors[i] : Color{0, 0, 0};
+            pp.color[i] = {double(vc.r), double(vc.g), double(vc.b)};
+        } else if (mode == Shading::kGouraud) {
+            pp.color[i] = shade(lighting, material, want_world ? pp.world[i] : Vec3{}, pp.normal[i]);
+            ++stats.shade_calls;
+        }
+    }
+
+    // Step 2: every triangle.
     FillState state;
     state.needs = needs;
     state.lighting = &lighting;
     state.material = material;
     state.point_light = point_light;
-    const int width = frame.color.width(), height = frame.color.height();
-    // Per position, once: where it lies (inside the view volume, outside, or not finite) and,
-    // inside, its screen position; a triangle that needs no clipping reuses them.
-    enum Where : unsigned char { kInside, kOutside, kNotFinite };
-    std::vector<Where> where(n);
-    std::vector<Vec3> screen(n);
-    for (int i = 0; i < n; ++i) {
-        const Vec4 c = verts[i].clip;
-        if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
-            where[i] = kNotFinite;
-        } else if (inside(c)) {
-            where[i] = kInside;
-            screen[i] = m3::to_screen(c, width, height);
-        } else {
-            where[i] = kOutside;
-        }
-    }
+    // A position as a ClipVertex or a ScreenVertex with only the attributes this mode reads.
+    auto clip_vertex = [&](int i) {
+        ClipVertex v;
+        v.clip = clip_of(i);
+        if (want_color) v.color = pp.color[i];
+        if (want_normals) v.normal = pp.normal[i];
+        if (want_world) v.world = pp.world[i];
+        if (want_uv && i < static_cast<int>(mesh.uvs.size())) v.uv = mesh.uvs[i];
+        return v;
+    };
+    auto screen_vertex = [&](int i) {
+        ScreenVertex v;
+        v.screen = pp.screen[i];
+        v.w = pp.w[i];
+        if (want_color) v.color = pp.color[i];
+        if (want_normals) v.normal = pp.normal[i];
+        if (want_world) v.world = pp.world[i];
+        if (want_uv && i < static_cast<int>(mesh.uvs.size())) v.uv = mesh.uvs[i];
+        return v;
+    };
 
-    std::vector<ClipVertex> poly;  // a clipped triangle's polygon
     for (std::size_t face = 0; face < mesh.triangles.size(); ++face) {
         const auto& t = mesh.triangles[face];
         if (t[0] < 0 || t[0] >= n || t[1] < 0 || t[1] >= n || t[2] < 0 || t[2] >= n) continue;
-        if (where[t[0]] == kNotFinite || where[t[1]] == kNotFinite || where[t[2]] == kNotFinite) continue;
-        const ClipVertex &c0 = verts[t[0]], &c1 = verts[t[1]], &c2 = verts[t[2]];
+        const Where w0 = pp.where[t[0]], w1 = pp.where[t[1]], w2 = pp.where[t[2]];
+        if (w0 == Where::kNotFinite || w1 == Where::kNotFinite || w2 == Where::kNotFinite) continue;
         bool colored = false;
-        // One triangle of the fan: cull it, or color it (the first time) and fill it.
-        auto draw = [&](const ClipVertex* const src[3], const Vec3 scr[3]) {
-            if (needs.cull && m3::is_back_facing(scr[0], scr[1], scr[2])) {
+        // One triangle of the fan, from its screen positions and a function that makes its
+        // three vertices: cull it, or color it (the first time) and fill it.
+        auto draw = [&](Vec3 s0, Vec3 s1, Vec3 s2, auto&& make_vertices) {
+            if (needs.cull && m3::is_back_facing(s0, s1, s2)) {
                 ++stats.triangles_culled;
                 return;
             }
@@ -463,31 +567,32 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
                 if (mode == Shading::kFaceColor) {
                     state.flat_color = face < mesh.face_colors.size() ? mesh.face_colors[face] : raster::colors::white;
                 } else if (mode == Shading::kFlat) {
-                    const Vec3 centroid = (c0.world + c1.world + c2.world) / 3;
+                    const Vec3 p0 = pp.world[t[0]], p1 = pp.world[t[1]], p2 = pp.world[t[2]];
                     ++stats.shade_calls;
-                    state.flat_color = to_color(shade(lighting, material, centroid, face_normal(c0.world, c1.world, c2.world)));
+                    state.flat_color = color_of(shade(lighting, material, (p0 + p1 + p2) / 3, face_normal(p0, p1, p2)));
                 }
             }
-            std::array<ScreenVertex, 3> s;
-            for (int k = 0; k < 3; ++k) {
-                s[k] = {scr[k], src[k]->clip.w, src[k]->color, src[k]->normal, src[k]->world, src[k]->uv};
-            }
-            fill_triangle(frame, s, state, stats);
             ++stats.triangles_drawn;
+            // On a dense mesh most triangles cover no pixel center at all; when the bounding
+            // box (widened by the snapping step) holds none, the fill would find nothing.
+            if (misses_every_center(s0, s1, s2)) return;
+            fill_triangle(frame, make_vertices(), state, stats);
         };
-        if (where[t[0]] == kInside && where[t[1]] == kInside && where[t[2]] == kInside) {
-            const ClipVertex* src[3] = {&c0, &c1, &c2};
-            const Vec3 scr[3] = {screen[t[0]], screen[t[1]], screen[t[2]]};
-            draw(src, scr);
+        if (w0 == Where::kInside && w1 == Where::kInside && w2 == Where::kInside) {
+            draw(pp.screen[t[0]], pp.screen[t[1]], pp.screen[t[2]], [&] {
+                return std::array<ScreenVertex, 3>{screen_vertex(t[0]), screen_vertex(t[1]), screen_vertex(t[2])};
+            });
             continue;
         }
         ++stats.triangles_clipped;
-        poly = clip_triangle({c0, c1, c2});
+        const std::vector<ClipVertex> poly = clip_triangle({clip_vertex(t[0]), clip_vertex(t[1]), clip_vertex(t[2])});
+        auto to_screen_vertex = [&](const ClipVertex& c) {
+            return ScreenVertex{m3::to_screen(c.clip, width, height), c.clip.w, c.color, c.normal, c.world, c.uv};
+        };
         for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
-            const ClipVertex* src[3] = {&poly[0], &poly[i], &poly[i + 1]};
-            const Vec3 scr[3] = {m3::to_screen(poly[0].clip, width, height), m3::to_screen(poly[i].clip, width, height),
-                                 m3::to_screen(poly[i + 1].clip, width, height)};
-            draw(src, scr);
+            const std::array<ScreenVertex, 3> sv = {to_screen_vertex(poly[0]), to_screen_vertex(poly[i]),
+                                                    to_screen_vertex(poly[i + 1])};
+            draw(sv[0].screen, sv[1].screen, sv[2].screen, [&] { return sv; });
         }
     }
     // END SOLUTION
