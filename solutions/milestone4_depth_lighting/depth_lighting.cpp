@@ -104,7 +104,7 @@ namespace {
 Vec3 unit_or_zero(Vec3 v) {
     const double len = raster::length(v);
     if (!(len > 0) || !std::isfinite(len)) return {};
-    return v / len;
+    return v * (1 / len);  // one division instead of three
 }
 
 }  // namespace
@@ -173,9 +173,10 @@ Vec3 shade(const Lighting& lighting, Color base, Vec3 position, Vec3 normal) {
 namespace {
 
 // One channel of to_color, inline for the fill loop: clamp to [0, 255], then round to
-// nearest (the value is >= 0 by then). A NaN fails `v > 0` and gives 0.
+// nearest (the value is >= 0 by then). std::max(0.0, NaN) is 0, so a NaN gives 0; written
+// this way round, the clamp compiles to two instructions and no branch.
 inline std::uint8_t channel(double v) {
-    return v > 0 ? static_cast<std::uint8_t>((v < 255 ? v : 255) + 0.5) : 0;
+    return static_cast<std::uint8_t>(std::min(std::max(0.0, v), 255.0) + 0.5);
 }
 
 inline Color color_of(Vec3 levels) { return {channel(levels.x), channel(levels.y), channel(levels.z)}; }
