@@ -10,6 +10,7 @@
 #include "m1/scenes.h"
 #include "m2/scenes.h"
 #include "m3/scenes.h"
+#include "m4/scenes.h"
 
 namespace {
 
@@ -95,6 +96,42 @@ std::vector<std::string> dump_m3() {
     return out;
 }
 
+std::vector<std::string> dump_m4() {
+    std::vector<std::string> out;
+    for (const m4cp::Scene& s : m4cp::scenes()) {
+        std::ostringstream o;
+        o << s.id << "|" << s.title << "|" << s.hint << "|" << s.width << "x" << s.height << "|" << s.demo;
+        for (const m4cp::Panel& p : s.panels) {
+            const m4cp::Camera& c = p.camera;
+            o << "|" << v3(c.eye) << v3(c.target) << v3(c.up) << c.ortho << num(c.fovy) << num(c.half_height)
+              << num(c.near) << num(c.far) << p.x0 << "," << p.y0 << "," << p.w << "," << p.h << col(p.background)
+              << p.depth_test << int(p.format) << int(p.shading) << p.perspective_correct << p.cull << v3(p.ambient);
+            for (const m4cp::LightSpec& l : p.lights) o << "/" << l.point << v3(l.vector) << v3(l.intensity);
+            for (const m4cp::Item& it : p.items) {
+                o << "/" << v3(it.position) << v3(it.axis) << num(it.angle) << v3(it.size) << col(it.material);
+                for (const raster::Vec3& v : it.mesh.positions) o << v3(v);
+                for (const raster::Vec3& v : it.mesh.normals) o << v3(v);
+                for (const raster::Color& fc : it.mesh.face_colors) o << col(fc);
+                o << it.mesh.triangles.size();
+            }
+        }
+        // The number groups' inputs belong to their checkpoints.
+        if (s.id == "m4.depth_keys") {
+            for (const m4cp::KeyCase& k : m4cp::key_cases()) o << k.format << num(k.z_ndc) << num(k.w);
+        }
+        if (s.id == "m4.clip_attributes") {
+            for (const m4cp::ClipCase& c : m4cp::clip_cases()) {
+                for (const raster::Vec4& v : c.clip) o << v4(v);
+            }
+        }
+        if (s.id == "m4.lambert") {
+            for (const m4cp::LambertCase& l : m4cp::lambert_cases()) o << v3(l.ambient) << col(l.base) << v3(l.normal);
+        }
+        out.push_back(o.str());
+    }
+    return out;
+}
+
 int failures = 0;
 
 void check(bool ok, const std::string& what) {
@@ -135,5 +172,6 @@ int main() {
     test("m1", m1cp::use_variant, dump_m1);
     test("m2", m2cp::use_variant, dump_m2);
     test("m3", m3cp::use_variant, dump_m3, 0.5);
+    test("m4", m4cp::use_variant, dump_m4, 0.5);
     return failures == 0 ? 0 : 1;
 }
