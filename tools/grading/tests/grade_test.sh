@@ -18,7 +18,12 @@ trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
 chmod 711 "$work"
 export RASTER_GRADE_TMP=$work/tmp
 mkdir -m 711 "$RASTER_GRADE_TMP"
-fail() { echo "FAIL ($case_name): $*" >&2; exit 1; }
+fail() {
+  echo "FAIL ($case_name): $*" >&2
+  # The grader's own log, when this case kept one, says why.
+  if [ -f "$work/log" ]; then echo "--- the grader's log (last 40 lines):" >&2; tail -n 40 "$work/log" >&2; fi
+  exit 1
+}
 
 if [ "$(id -u)" != 0 ]; then echo "skipped: the grader's tests need root (a sandbox uid)"; exit 77; fi
 
