@@ -56,29 +56,73 @@ void darken(Image& img, int x0, int y0, int x1, int y1) {
     }
 }
 
-// Writes lines of text, each made of colored pieces, downward from (x, y); each line at scale 2
-// when it fits the image's width, else 1. Returns the y below the last line.
+// Lines of text, each made of colored pieces.
 struct Piece {
     std::string text;
     Color color;
 };
 using Line = std::vector<Piece>;
 
-int write_lines(Image& img, int x, int y, const std::vector<Line>& lines) {
-    for (const Line& line : lines) {
-        int width = 0;
-        for (const Piece& p : line) width += raster::text_width(p.text);
-        const int scale = (2 * width + 2 * x <= img.width()) ? 2 : 1;
-        const int height = kGlyphHeight * scale;
-        darken(img, x - 4, y - 3, x + width * scale + 4, y + height + 2);
-        int cx = x;
-        for (const Piece& p : line) {
-            raster::draw_text(img, cx, y, p.text, p.color, scale);
-            cx += raster::text_width(p.text, scale);
+int width_of(const Line& line) {
+    int width = 0;
+    for (const Piece& p : line) width += raster::text_width(p.text);
+    return width;
+}
+
+// A line of one piece too wide for `room` pixels at scale 2 becomes several, broken at spaces.
+std::vector<Line> wrap(const Line& line, int room) {
+    if (line.size() != 1 || 2 * width_of(line) <= room) return {line};
+    std::vector<Line> out;
+    std::string current;
+    std::size_t start = 0;
+    const std::string& text = line[0].text;
+    while (start < text.size()) {
+        std::size_t end = text.find(' ', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string word = text.substr(start, end - start);
+        const std::string longer = current.empty() ? word : current + " " + word;
+        if (!current.empty() && 2 * raster::text_width(longer) > room) {
+            out.push_back({{current, line[0].color}});
+            current = "  " + word;  // continued lines are indented
+        } else {
+            current = longer;
         }
-        y += height + 6;
+        start = end + 1;
+    }
+    if (!current.empty()) out.push_back({{current, line[0].color}});
+    return out;
+}
+
+// Writes the lines downward from (x, y), on darkened bands: at scale 2 when a line fits the
+// image's width (long single-color lines are wrapped first), else at scale 1. Returns the y
+// below the last line.
+int write_lines(Image& img, int x, int y, const std::vector<Line>& lines) {
+    const int room = img.width() - 2 * x;
+    for (const Line& unwrapped : lines) {
+        for (const Line& line : wrap(unwrapped, room)) {
+            const int width = width_of(line);
+            const int scale = (2 * width <= room) ? 2 : 1;
+            const int height = kGlyphHeight * scale;
+            darken(img, x - 4, y - 3, x + width * scale + 4, y + height + 2);
+            int cx = x;
+            for (const Piece& p : line) {
+                raster::draw_text(img, cx, y, p.text, p.color, scale);
+                cx += raster::text_width(p.text, scale);
+            }
+            y += height + 6;
+        }
     }
     return y;
+}
+
+// The height write_lines will take for `lines`.
+int height_of(const Image& img, int x, const std::vector<Line>& lines) {
+    const int room = img.width() - 2 * x;
+    int h = 0;
+    for (const Line& unwrapped : lines) {
+        for (const Line& line : wrap(unwrapped, room)) h += kGlyphHeight * (2 * width_of(line) <= room ? 2 : 1) + 6;
+    }
+    return h;
 }
 
 }  // namespace
@@ -191,15 +235,14 @@ void App::draw_overlay(Image& img, const FrameInfo& info) const {
                            (spin_ ? ", spinning" : ""),
                        kDim}});
     if (help_) {
-        bottom.push_back({{"1-6 wireframe flat Gouraud per-pixel depth normals   drag/arrows orbit   right drag/A D Q E pan",
-                           kText}});
-        bottom.push_back({{"wheel/W S zoom   shift+drag/I J K L light   space spin   C cull   R reset   H help   Esc quit",
-                           kText}});
+        bottom.push_back({{"1-6 wireframe flat Gouraud per-pixel depth normals", kText}});
+        bottom.push_back({{"drag/arrows orbit   right drag/ADQE pan   wheel/WS zoom", kText}});
+        bottom.push_back({{"shift+drag/IJKL light  space spin  C cull  R reset", kText}});
+        bottom.push_back({{"H hide help   P screenshot   Esc quit", kText}});
     } else {
         bottom.push_back({{"H: help", kText}});
     }
-    const int line_height = kGlyphHeight * 2 + 6;  // an upper bound: lines that do not fit use scale 1
-    write_lines(img, 10, img.height() - 8 - line_height * static_cast<int>(bottom.size()), bottom);
+    write_lines(img, 10, img.height() - 4 - height_of(img, 10, bottom), bottom);
 }
 
 }  // namespace viewer

@@ -18,7 +18,7 @@ double clamp_finite(double v, double lo, double hi, double fallback) {
 void OrbitCamera::reset() {
     yaw_ = 0.6;
     pitch_ = 0.35;
-    distance_ = 3.2;
+    distance_ = 3.6;
     target_ = {};
 }
 

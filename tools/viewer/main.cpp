@@ -9,6 +9,7 @@
 //   --size WxH                   window size (default 800x600)
 //   --spin / --no-help           start spinning / with the key help hidden
 //   --reference                  draw everything with the reference (skip the probes)
+//   --help                       the options and the keys
 //   --events "STEPS"             scripted mode (script.h): inject events, take screenshots, exit
 //   --script FILE                the same, steps read from FILE
 //   --probe                      print which milestones are yours and exit (no window)
@@ -43,6 +44,7 @@ struct Options {
     Mode mode = Mode::kGouraud;
     int width = 800, height = 600;
     bool spin = false, help = true;
+    bool show_help = false;
     bool reference_only = false;
     bool probe_only = false;
     bool bench = false;
@@ -53,13 +55,15 @@ struct Options {
 
 constexpr const char* kModeNames[viewer::kModeCount] = {"wireframe", "flat", "gouraud", "perpixel", "depth", "normals"};
 
-void usage(const char* argv0) {
-    std::cerr << "usage: " << argv0
+void usage(std::ostream& out, const char* argv0) {
+    out << "usage: " << argv0
               << " [MODEL.obj | torus | sphere | big-torus | cube | soccer_ball ...]\n"
                  "  [--mode wireframe|flat|gouraud|perpixel|depth|normals] [--size WxH] [--spin] [--no-help]\n"
                  "  [--reference] [--events \"STEPS\" | --script FILE] [--probe] [--bench [FRAMES]]\n"
                  "Scripted steps (';' or new lines): key NAME [N]; drag BUTTON X0 Y0 X1 Y1; wheel N; frames N;\n"
-                 "  screenshot FILE; quit\n";
+                 "  screenshot FILE; quit\n"
+                 "Keys: 1-6 mode, drag or arrows orbit, right drag or A D Q E pan, wheel or W S zoom,\n"
+                 "  shift+drag or I J K L light, space spin, C culling, R reset, H help, P screenshot, Esc quit\n";
 }
 
 bool parse_options(int argc, char** argv, Options& o) {
@@ -87,6 +91,8 @@ bool parse_options(int argc, char** argv, Options& o) {
             if (o.width < 64 || o.height < 64 || o.width > 8192 || o.height > 8192) return false;
         } else if (a == "--spin") {
             o.spin = true;
+        } else if (a == "--help" || a == "-h") {
+            o.show_help = true;
         } else if (a == "--no-help") {
             o.help = false;
         } else if (a == "--reference") {
@@ -454,8 +460,12 @@ int run_window(App& app, const Options& o) {
 int main(int argc, char** argv) {
     Options o;
     if (!parse_options(argc, argv, o)) {
-        usage(argv[0]);
+        usage(std::cerr, argv[0]);
         return 2;
+    }
+    if (o.show_help) {
+        usage(std::cout, argv[0]);
+        return 0;
     }
     if (o.bench) return run_bench(o.bench_frames);
 

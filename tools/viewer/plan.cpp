@@ -30,7 +30,7 @@ Plan make_plan(Mode mode, const Stages& stages, const Flavour& student, const Fl
         plan.transforms = pick(3);
         plan.primitive = &student;
         plan.lighting = &reference;
-        plan.description = "your m2 triangles, " + whose(3) + " m3 painter's order (no depth buffer), reference light";
+        plan.description = "your m2 triangles in " + whose(3) + " m3 painter's order (no depth buffer before m4), reference m4 light";
     } else {
         plan.path = Plan::Path::kDrawMesh;
         plan.mesh = pick(4);

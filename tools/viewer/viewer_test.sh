@@ -58,6 +58,10 @@ probes)
     echo "$out"
     grep -q '^m1 lines: yours' <<<"$out" || fail "milestone 1 solved must count as finished"
     [ "$(grep -c ': reference (' <<<"$out")" -eq 3 ] || fail "milestones 2 to 4 are skeletons there"
+    out=$("$bin/viewer_m1_m2" --probe)
+    echo "$out"
+    [ "$(grep -c ': yours (' <<<"$out")" -eq 2 ] && grep -q '^m2 triangles: yours' <<<"$out" ||
+        fail "milestones 1 and 2 solved must count as finished, and only they"
     ;;
 
 xvfb | dummy)
@@ -100,12 +104,21 @@ xvfb | dummy)
         # A student with only milestone 1: the wireframe is theirs (lines) on the reference's
         # transforms, and looks like the reference's.
         run_viewer m1.log "${launch[@]}" "$bin/viewer_m1_only" --no-help --events "key 1; screenshot wire_m1.png"
-        run_viewer ref.log "${launch[@]}" "$bin/viewer_skeleton" --no-help --events "key 1; screenshot wire_ref.png"
+        run_viewer ref.log "${launch[@]}" "$bin/viewer_skeleton" --no-help \
+            --events "key 1; screenshot wire_ref.png; key 2; screenshot flat_ref.png"
         grep -q 'wireframe: drawn by your m1 lines, reference m3 transforms' m1.log || fail "m1 alone: the lines are not the student's"
         grep -q 'wireframe: drawn by reference m1 lines, reference m3 transforms' ref.log || fail "skeleton: not the reference"
         d=$(differ wire_m1.png wire_ref.png)
         echo "m1 alone against the reference: $d pixels differ"
         [ "$d" -le 50 ] || fail "the wireframe of m1 alone differs from the reference's in $d pixels"
+        # Milestones 1 and 2: flat is the student's triangles in the painter's order (no depth
+        # buffer yet), close to the reference's depth-tested picture.
+        run_viewer m12.log "${launch[@]}" "$bin/viewer_m1_m2" --no-help --events "key 2; screenshot flat_m12.png"
+        grep -q "flat: drawn by your m2 triangles in reference m3 painter's order" m12.log ||
+            fail "m1 and m2: flat is not drawn by the student's triangles"
+        d=$(differ flat_m12.png flat_ref.png) flat=$(field flat_ref.png drawn)
+        echo "m1 and m2, flat, against the reference: $d of $flat pixels differ"
+        [ $((d * 50)) -le "$flat" ] || fail "m1 and m2: flat differs from the reference's in $d of $flat pixels"
     else
         # The student's own viewer (whatever stage their code is at) starts and draws.
         run_viewer student.log "${launch[@]}" "$bin/viewer" --no-help --events "frames 2; screenshot student.png"
