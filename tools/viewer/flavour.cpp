@@ -242,7 +242,7 @@ std::vector<double> probe_m3() {
         add(m3::transform_point(view * model, p));
         const Vec4 c = mvp * Vec4{p.x, p.y, p.z, 1};
         add4(c);
-        if (c.w > 0) add(m3::to_screen(c, 80, 60));
+        add(c.w > 0 ? m3::to_screen(c, 80, 60) : Vec3{});
     }
     // A segment from in front of the camera to behind it.
     Vec4 a = mvp * Vec4{0, 0, 0, 1}, b = mvp * Vec4{2, 4, 8, 1};
@@ -263,8 +263,8 @@ std::vector<double> probe_m3() {
         {{{{0, 0, -2}, {1, 0, -2}, {0, 1, -2}}}, {{{0, 0, -9}, {1, 0, -8}, {0, 1, -7}}}, {{{0, 0, -1}, {1, 0, -1}, {0, 1, -1}}},
          {{{0, 0, -5}, {1, 0, -5}, {0, 1, -4}}}});
     out.push_back(static_cast<double>(order.size()));
-    for (const int i : order) out.push_back(i);
-    return out;
+    for (std::size_t i = 0; i < 4; ++i) out.push_back(i < order.size() ? order[i] : -1);
+    return out;  // always the same count of numbers, so that the probe can say how many differ
 }
 
 Image probe_m4() {

@@ -131,7 +131,7 @@ StageResult compare_images(const raster::Image& student, const raster::Image& re
 }
 
 StageResult compare_numbers(const std::vector<double>& student, const std::vector<double>& reference) {
-    if (student.size() != reference.size()) return {false, "a count differs"};
+    if (student.size() != reference.size()) return {false, "gives a different number of results"};
     std::size_t differ = 0;
     for (std::size_t i = 0; i < reference.size(); ++i) {
         const double tolerance = 1e-6 * std::max(1.0, std::abs(reference[i]));
