@@ -3,8 +3,13 @@
 // is tested by viewer_test.sh.
 #include <catch2/catch.hpp>
 
+#include <signal.h>
+
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <thread>
 
 #include "camera.h"
 #include "model.h"
@@ -34,6 +39,30 @@ TEST_CASE("numbers match within 1e-6 relative; NaN and a wrong count never do", 
     CHECK_FALSE(viewer::compare_numbers({1, 2, 0}, {1, 2.01, 0}).yours);
     CHECK_FALSE(viewer::compare_numbers({std::nan("")}, {0}).yours);
     CHECK_FALSE(viewer::compare_numbers({1, 2}, {1, 2, 3}).yours);
+}
+
+TEST_CASE("a probe that crashes, hangs or throws only marks its own stage unfinished", "[viewer]") {
+    viewer::Flavour student, reference;
+    reference.probe_m1 = reference.probe_m2 = reference.probe_m4 = [] { return raster::Image(4, 4, {9, 9, 9}); };
+    reference.probe_m3 = [] { return std::vector<double>{1, 2}; };
+    student.probe_m1 = []() -> raster::Image {
+        raise(SIGKILL);  // a crash no handler can catch (Catch2 handles SIGSEGV and SIGABRT)
+        return {};
+    };
+    student.probe_m2 = []() -> raster::Image {
+        std::this_thread::sleep_for(std::chrono::hours(1));  // a loop that never ends
+        return {};
+    };
+    student.probe_m3 = []() -> std::vector<double> { throw std::runtime_error("boom"); };
+    student.probe_m4 = reference.probe_m4;
+    const viewer::Stages stages = viewer::probe_stages(student, reference, {true, 1.0});
+    CHECK_FALSE(stages[0].yours);
+    CHECK(stages[0].detail.find("crashed") == 0);
+    CHECK_FALSE(stages[1].yours);
+    CHECK(stages[1].detail == "did not return within 1 s");
+    CHECK_FALSE(stages[2].yours);
+    CHECK(stages[2].detail == "threw: boom");
+    CHECK(stages[3].yours);
 }
 
 TEST_CASE("the plan: the student's code wherever the stage is finished, else the reference", "[viewer]") {
