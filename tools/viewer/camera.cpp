@@ -64,7 +64,7 @@ View OrbitCamera::view(double model_yaw, double fovy_degrees) const {
 
 std::string OrbitCamera::warning() const {
     const double d = raster::length(eye());
-    if (d < 1.0) return "the camera is inside the model (W, S or the wheel move it; R resets)";
+    if (d < 1.0) return "the camera is inside the model's bounding sphere (W, S or the wheel move it; R resets)";
     if (d > 200.0) return "far away: " + std::to_string(static_cast<long long>(d)) + " model radii (R resets)";
     return "";
 }
