@@ -5,7 +5,9 @@
 set -euo pipefail
 
 packages=(cmake make g++ pkg-config catch2 libstb-dev bubblewrap procps zip unzip python3 libtinyobjloader-dev
-          libgif-dev libglm-dev nlohmann-json3-dev "$@")
+          libgif-dev libglm-dev nlohmann-json3-dev
+          libsdl2-dev xvfb xauth  # the viewer (tools/viewer) and its test under a virtual X server
+          "$@")
 # Optional: used by tests that look at pages (headless Chromium); installed where the
 # distribution has them as a real package, and the tests that need them skip otherwise.
 optional=(chromium)
