@@ -27,4 +27,13 @@ grep -q "0 passed, 102 failed" "$work/check.log" || { tail -n 20 "$work/check.lo
 cp "$root/solutions/milestone1_lines/lines.cpp" "$h/milestone1_lines/lines.cpp"
 make -C "$h/build" check-m1 >"$work/check-m1.log" 2>&1 || { tail -n 30 "$work/check-m1.log"; exit 1; }
 grep -q "All checkpoints pass" "$work/check-m1.log" || { tail -n 20 "$work/check-m1.log"; exit 1; }
+# Where SDL2 is installed, the viewer is built in the handout too, and its start-up check finds
+# the student's milestone 1 (the solution copied above, rebuilt) and the reference for the rest.
+if pkg-config --exists sdl2 2>/dev/null; then
+  cmake --build "$h/build" --target viewer >"$work/viewer-build.log" 2>&1 || { tail -n 30 "$work/viewer-build.log"; exit 1; }
+  SDL_VIDEODRIVER=dummy timeout 60 "$h/build/tools/viewer/viewer" --probe >"$work/probe.log" 2>&1 ||
+    { cat "$work/probe.log"; echo "the handout's viewer failed its start-up check"; exit 1; }
+  grep -q "m1 lines: yours" "$work/probe.log" || { cat "$work/probe.log"; echo "the handout's viewer did not find milestone 1"; exit 1; }
+  grep -q "m2 triangles: reference" "$work/probe.log" || { cat "$work/probe.log"; echo "the handout's viewer took the skeleton of milestone 2"; exit 1; }
+fi
 echo "the handout builds, and make check works in it"
