@@ -25,7 +25,9 @@ int main(int argc, char** argv) {
     cube.face_colors.assign(12, {230, 80, 60});
 
     const m4::Mat4 view = m3::look_at({3, 2, 4}, {0, 0, 0}, {0, 1, 0});
-    const m4::Mat4 proj = m3::perspective(50, 1, 0.1, 100);
+    // Near and far hug the cube (it lies 3.6 to 7.2 from the eye), so the depth view spreads
+    // its grays; with near 0.1 and far 100 the whole cube would be nearly black (lesson 7).
+    const m4::Mat4 proj = m3::perspective(50, 1, 3, 8);
     m4::Lighting lighting;
     lighting.lights.push_back({m4::Light::Kind::kDirectional, {-0.5, -1, -0.3}, {0.8, 0.8, 0.8}});
     lighting.lights.push_back({m4::Light::Kind::kPoint, {2, 3, 3}, {0.3, 0.3, 0.3}});

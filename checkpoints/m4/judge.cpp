@@ -159,7 +159,10 @@ void judge_group(Group g, Ctx& c) {
                                          num(get(v, "depth.size")) + " keys, " + num(get(v, "depth.not_clear")) +
                                          " of them not kClearKey; expected 35 keys, all kClearKey");
             }
-            if (get(v, "again.key4") != 0xFFFFFFFFu) {
+            if (get(v, "again.key4") < 0) {
+                c.add("depth clear", "TODO 2: after a second clear_frame the depth buffer held fewer than 5 keys: "
+                                     "it must have one per pixel");
+            } else if (get(v, "again.key4") != 0xFFFFFFFFu) {
                 c.add("depth clear", "TODO 2: a second clear_frame left a key of the previous frame (" +
                                          num(get(v, "again.key4")) + "): every frame starts with every key kClearKey");
             }
@@ -244,7 +247,10 @@ void judge_group(Group g, Ctx& c) {
                 if (same3(mine, want, 1e-9)) continue;
                 const Vec3 ambient_only{k.base.r * k.ambient.x, k.base.g * k.ambient.y, k.base.b * k.ambient.z};
                 std::string topic = "lambert", why;
-                if (i == 1 && (mine.x < ambient_only.x - 1e-6)) {
+                const bool all_zero = same3(mine, Vec3{}, 0);
+                if (all_zero && !same3(want, Vec3{}, 0)) {
+                    why = ": shade() returned nothing; start from the ambient term";
+                } else if (i == 1 && (mine.x < ambient_only.x - 1e-6)) {
                     topic = "negative light";
                     why = ": a light behind the surface made it darker than ambient; use max(0, N . L)";
                 } else if ((i == 0 && same3(mine, ambient_only, 1e-9)) || (i == 1 && mine.x > ambient_only.x + 1e-6)) {
@@ -256,8 +262,16 @@ void judge_group(Group g, Ctx& c) {
                     topic = "zero normal";
                     why = ": a zero normal lights nothing (ambient only), never NaN";
                 }
-                c.add(topic, "TODO 5a: shade() case " + std::to_string(i) + " gave " + str(mine) + " levels, expected " +
-                                 str(want) + why);
+                // The case's inputs, so that the student can redo it by hand.
+                std::string inputs = "base " + str(Vec3{double(k.base.r), double(k.base.g), double(k.base.b)}) +
+                                     ", ambient " + str(k.ambient) + ", normal " + str(k.normal) + ", position " +
+                                     str(k.position);
+                for (const auto& l : k.lights) {
+                    inputs += std::string(l.point ? ", point light at " : ", directional light going ") + str(l.vector) +
+                              " of intensity " + str(l.intensity);
+                }
+                c.add(topic, "TODO 5a: shade() case " + std::to_string(i) + " (" + inputs + ") gave " + str(mine) +
+                                 " levels, expected " + str(want) + why);
             }
             const Color want[] = {{12, 13, 128}, {255, 0, 255}, {255, 0, 255}, {0, 0, 128}};
             for (int i = 0; i < 4; ++i) {
@@ -579,16 +593,20 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                      std::to_string(panel.w * panel.h) + " pixels" + where);
         }
         // The counts.
-        static const char* kStats[][3] = {
-            {"triangles_clipped", "clipping", "triangles sent to clip_triangle"},
-            {"triangles_culled", "pipeline", "fan triangles culled"},
-            {"triangles_drawn", "pipeline", "fan triangles drawn"},
-            {"fragments", "rasterizer", "fragments (covered pixel centers)"},
-            {"depth_tests", "needs", "depth tests"},
-            {"depth_writes", "depth test", "depth writes"},
-            {"vertex_normals", "needs", "vertex normals computed"},
-            {"shade_calls", "needs", "calls of shade()"},
-            {"interpolated", "needs", "attribute values interpolated"},
+        // Each count with its concept and the TODO that makes it: draw_mesh (9) counts
+        // triangles and positions, fill_triangle (8) counts fragments; shade() is called by
+        // draw_mesh per position or face (Gouraud, flat) and by fill_triangle per fragment.
+        const bool per_pixel_shading = panel.shading == Shade::kPerPixel;
+        const char* kStats[][4] = {
+            {"triangles_clipped", "clipping", "triangles sent to clip_triangle", "TODO 9"},
+            {"triangles_culled", "pipeline", "fan triangles culled", "TODO 9"},
+            {"triangles_drawn", "pipeline", "fan triangles drawn", "TODO 9"},
+            {"fragments", "rasterizer", "fragments (covered pixel centers)", "TODO 8"},
+            {"depth_tests", "needs", "depth tests", "TODO 8"},
+            {"depth_writes", "depth test", "depth writes", "TODO 8"},
+            {"vertex_normals", "needs", "vertex normals computed", "TODO 9"},
+            {"shade_calls", "needs", "calls of shade()", per_pixel_shading ? "TODO 8" : "TODO 9"},
+            {"interpolated", "needs", "attribute values interpolated", "TODO 8"},
         };
         const bool clipped = get(c.ref, key + ".stats.triangles_clipped") > 0;
         for (const auto& st : kStats) {
@@ -609,8 +627,16 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             }
             if (ok) continue;
             std::string why;
-            if (b == 0) why = ": this scene does not need that stage (Needs), so draw_mesh must not run it";
-            c.add(b == 0 ? "needs" : st[1], "TODO 9: " + num(a) + " " + st[2] + where + ", expected " +
+            if (b == 0) {
+                why = ": this scene does not need that stage (Needs), so it must not run";
+            } else if ((name == "interpolated" || (name == "shade_calls" && per_pixel_shading)) && a > b &&
+                       panel.depth_test) {
+                why = ": are hidden fragments interpolated too? Test the depth first; only a fragment that "
+                      "passes (or ties) needs its attributes";
+            } else if (name == "depth_writes" && a > b) {
+                why = ": is a fragment written when the test fails, or on a tie without depth_passes()?";
+            }
+            c.add(b == 0 ? "needs" : st[1], std::string(st[3]) + ": " + num(a) + " " + st[2] + where + ", expected " +
                                                 (per_triangle ? num(b) : "about " + num(b)) + why);
         }
         // Keys read back from the depth buffer at known pixels, against the reference's.
@@ -692,10 +718,12 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         }
         if (diff > 0) {
             c.add(topic == std::string("tie rule") ? "tie rule" : "depth test",
-                  "TODO 2: the same triangles drawn in another order give another picture (" + std::to_string(diff) +
-                      " pixels differ between panel " + std::to_string(p + 1) + " and panel " + std::to_string(q + 1) +
-                      "): the depth test must decide every pixel, and a fragment that fails must write nothing, "
-                      "not even its depth");
+                  "TODOs 2 and 8: the same triangles drawn in another order give another picture (" +
+                      std::to_string(diff) + " pixels differ between panel " + std::to_string(p + 1) + " and panel " +
+                      std::to_string(q + 1) +
+                      "): the depth test must decide every pixel (depth_passes, TODO 2), a fragment that fails must "
+                      "write nothing, not even its depth, and an exact tie must go through depth_passes too "
+                      "(fill_triangle, TODO 8)");
         }
     }
 }

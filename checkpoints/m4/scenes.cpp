@@ -267,7 +267,11 @@ std::vector<Scene> build() {
     {
         Scene s = picture("m4.flat_sphere", "A sphere, flat-shaded: one light value per face",
                           "face normal of the world positions, lit at the centroid", {5, 4, 9}, 96, 96);
-        Panel pn = panel(cam({0.03, 0.05, 3.2}), {item(sphere_mesh(12, false))}, 0, 0, 96, 96, Shade::kFlat);
+        // Turned, so that a face normal of the model-space positions lights the wrong faces.
+        Item ball = item(sphere_mesh(12, false));
+        ball.axis = {1, 0.4, 0.2};
+        ball.angle = 0.9;
+        Panel pn = panel(cam({0.03, 0.05, 3.2}), {ball}, 0, 0, 96, 96, Shade::kFlat);
         pn.cull = true;
         pn.lights = {directional({-0.6, -0.7, -1})};
         s.panels.push_back(pn);
