@@ -506,6 +506,7 @@ const char* picture_topic(const std::string& id) {
         {"m4.zfight_formats", "depth format"},      {"m4.coplanar", "tie rule"},
         {"m4.degenerate_normals", "zero normal"},   {"m4.near_eye", "clipping"},
         {"m4.extreme_input", "bad input"},          {"m4.needs", "needs"},
+        {"m4.fill_triangle", "rasterizer"},
     };
     const auto it = topics.find(id);
     return it == topics.end() ? "pipeline" : it->second;
@@ -562,6 +563,57 @@ void judge_shading_chart(Ctx& c, const raster::Image& mine, const cp::Artifacts&
         chart.series.push_back(yours);
     }
     c.j.pictures["error_vs_time"] = raster::plot(chart);
+}
+
+// The ready-made triangles' colors, worked out here at pixels well inside the first triangle
+// where the reference shows it (not hidden, not a tie lost to the gray copy), both with the
+// perspective-correct weights and with the screen weights: more pixels matching the second
+// than the first name the mistake.
+void judge_screen_weights(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
+    const auto ref_it = ref.images.find("main");
+    if (ref_it == ref.images.end() || !panel.perspective_correct) return;
+    const ScreenTri& t = panel.screen_tris[0];
+    const double area = (t.screen[1].x - t.screen[0].x) * (t.screen[2].y - t.screen[0].y) -
+                        (t.screen[1].y - t.screen[0].y) * (t.screen[2].x - t.screen[0].x);
+    if (area == 0) return;
+    auto rounded = [](Vec3 v) {
+        auto ch = [](double x) { return std::uint8_t(std::clamp(x, 0.0, 255.0) + 0.5); };
+        return Color{ch(v.x), ch(v.y), ch(v.z)};
+    };
+    auto close = [](Color a, Color b, int tol) {
+        return std::abs(a.r - b.r) <= tol && std::abs(a.g - b.g) <= tol && std::abs(a.b - b.b) <= tol;
+    };
+    long long telling = 0, screen_like = 0, perspective_like = 0;
+    for (int y = 0; y < panel.h; ++y) {
+        for (int x = 0; x < panel.w; ++x) {
+            const double px = x + 0.5, py = y + 0.5;
+            double l[3];
+            for (int i = 0; i < 3; ++i) {
+                const Vec3 a = t.screen[std::size_t((i + 1) % 3)], b = t.screen[std::size_t((i + 2) % 3)];
+                l[i] = ((b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x)) / area;
+            }
+            if (l[0] < 0.05 || l[1] < 0.05 || l[2] < 0.05) continue;
+            double q[3], sum = 0;
+            for (int i = 0; i < 3; ++i) sum += q[i] = l[i] / t.w[std::size_t(i)];
+            Vec3 persp{}, flat{};
+            for (int i = 0; i < 3; ++i) {
+                persp = persp + t.color[std::size_t(i)] * (q[i] / sum);
+                flat = flat + t.color[std::size_t(i)] * l[i];
+            }
+            const Color pc = rounded(persp), sc = rounded(flat);
+            if (close(pc, sc, 10) || !close(ref_it->second.at(panel.x0 + x, panel.y0 + y), pc, 3)) continue;
+            ++telling;
+            const Color m = mine.at(panel.x0 + x, panel.y0 + y);
+            screen_like += close(m, sc, 3);
+            perspective_like += close(m, pc, 3);
+        }
+    }
+    if (screen_like >= 10 && screen_like > perspective_like) {
+        c.add("perspective", "TODO 8: at " + std::to_string(screen_like) + " of " + std::to_string(telling) +
+                                 " pixels inside the first triangle your colors are the SCREEN-weighted ones: weigh "
+                                 "each vertex by l_i / w_i and normalize (perspective_weights) unless "
+                                 "needs.perspective_correct is false");
+    }
 }
 
 void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, const raster::Image& expected) {
@@ -655,6 +707,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                    ": depth is interpolated with the SCREEN weights, then depth_key");
         }
         if (!sized) continue;
+        if (!panel.screen_tris.empty()) judge_screen_weights(c, *mine, ref, panel);
         if (s.checks.checker_error) {
             const raster::Image truth = analytic_checker(panel);
             long long inside = 0, wrong = 0, ref_wrong = 0;

@@ -284,6 +284,22 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
         m4::Stats total;
         auto draw = [&] {
             total = {};
+            if (!panel.screen_tris.empty()) {
+                // fill_triangle alone: the frame is cleared here (as clear_frame would) and the
+                // triangles come ready-made, so this picture depends on TODO 8 and what it calls.
+                frame.color.fill(panel.background);
+                frame.format = needs.depth_format;
+                frame.depth.assign(needs.depth_test ? std::size_t(panel.w) * std::size_t(panel.h) : 0, m4::kClearKey);
+                m4::FillState state;
+                state.needs = needs;
+                state.lighting = &lighting;
+                for (const ScreenTri& t : panel.screen_tris) {
+                    std::array<m4::ScreenVertex, 3> sv;
+                    for (int k = 0; k < 3; ++k) sv[std::size_t(k)] = {t.screen[std::size_t(k)], t.w[std::size_t(k)], t.color[std::size_t(k)], {}, {}, {}};
+                    cp::traced(*g_out, "fill_triangle", frame.color, [&] { m4::fill_triangle(frame, sv, state, total); });
+                }
+                return;
+            }
             for (const auto& items : frames) {
                 cp::traced(*g_out, "clear_frame", frame.color,
                            [&] { m4::clear_frame(frame, panel.background, needs.depth_test, needs.depth_format); });

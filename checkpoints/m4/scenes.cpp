@@ -190,6 +190,30 @@ std::vector<Scene> build() {
                 "every attribute of a new vertex is interpolated with the same t as its position", {7},
                 {Group::kClip}));
 
+    // ---- the rasterizer alone ----
+    {
+        Scene s = picture("m4.fill_triangle", "Three triangles straight through fill_triangle",
+                          "per covered pixel center: weights, key, depth test, perspective-correct colors; an exact "
+                          "tie goes through depth_passes",
+                          {8, 1, 2, 5}, 128, 96);
+        Panel pn = panel(cam({0, 0, 5}), {}, 0, 0, 128, 96, Shade::kVertexColor);
+        const Vec3 red{230, 40, 40}, green{40, 220, 60}, blue{50, 70, 240};
+        // Counter-clockwise on the screen, with w from 1 to 4: the colors bend toward the near corner.
+        const ScreenTri lit{{Vec3{10.3, 9.6, -0.2}, Vec3{118.4, 20.2, 0.5}, Vec3{40.2, 90.7, 0.1}}, {1, 4, 2}, {red, green, blue}};
+        // Clockwise, and through the first one: each is in front along part of the crossing.
+        const ScreenTri crossing{{Vec3{20.6, 80.3, 0.6}, Vec3{109.7, 85.1, -0.4}, Vec3{70.1, 5.4, 0.3}},
+                                 {1.5, 1, 3},
+                                 {Vec3{240, 220, 60}, Vec3{60, 220, 230}, Vec3{220, 60, 220}}};
+        // The first one's geometry again in one gray: every key ties with it, and the brighter
+        // color (r first) wins pixel by pixel.
+        ScreenTri gray = lit;
+        gray.color = {Vec3{150, 150, 150}, Vec3{150, 150, 150}, Vec3{150, 150, 150}};
+        pn.screen_tris = {lit, crossing, gray};
+        pn.depth_probes = {{40, 30}, {70, 50}, {90, 70}};
+        s.panels.push_back(pn);
+        add(s);
+    }
+
     // ---- occlusion ----
     {
         Scene s = picture("m4.occlusion_order", "Three overlapping triangles, drawn in two orders",
@@ -505,6 +529,16 @@ Scene vary(const Scene& pub, Rng& rng) {
             "m4.coplanar"})) {
         const Vec3 d{rng.uniform(-12, 12) / 100.0, rng.uniform(-12, 12) / 100.0, rng.uniform(-12, 12) / 100.0};
         for (Panel& p : s.panels) p.camera.eye = p.camera.eye + d;
+    }
+    // The ready-made triangles moved by up to two pixels, the same move for the k-th vertex of
+    // each (the tie keeps its two identical triangles).
+    for (Panel& p : s.panels) {
+        if (p.screen_tris.empty()) continue;
+        std::array<Vec3, 3> move;
+        for (Vec3& m : move) m = {rng.uniform(-200, 200) / 100.0, rng.uniform(-200, 200) / 100.0, 0};
+        for (ScreenTri& t : p.screen_tris) {
+            for (int k = 0; k < 3; ++k) t.screen[std::size_t(k)] = t.screen[std::size_t(k)] + move[std::size_t(k)];
+        }
     }
     if (is({"m4.flat_sphere", "m4.gouraud_sphere", "m4.per_pixel_sphere", "m4.nonuniform_scale", "m4.normal_view",
             "m4.overflow", "m4.needs"})) {

@@ -55,6 +55,14 @@ struct LightSpec {
 enum class Format { kFloatZ, kReversedZ, kFixed24, kInverseW };
 enum class Shade { kFaceColor, kVertexColor, kFlat, kGouraud, kPerPixel, kChecker, kDepthView, kNormalView };
 
+// A triangle given straight on the screen (pixels, z_ndc, clip w, vertex color in levels), for
+// the checkpoint that draws with fill_triangle alone.
+struct ScreenTri {
+    std::array<Vec3, 3> screen;
+    std::array<double, 3> w;
+    std::array<Vec3, 3> color;
+};
+
 // One picture: a camera, items, lights and the needs, drawn into the rectangle (x0, y0, w, h)
 // of the main image. `frames` lists which items each frame draws (the picture is the last
 // frame's; the frame is cleared before each); empty: one frame with every item in order.
@@ -71,6 +79,9 @@ struct Panel {
     Vec3 ambient{0.1, 0.1, 0.1};
     std::vector<LightSpec> lights;
     std::vector<std::vector<int>> frames;
+    // When not empty: the render half clears the frame itself and draws these with
+    // fill_triangle alone (no clear_frame, no draw_mesh); the camera and items are unused.
+    std::vector<ScreenTri> screen_tris;
     std::vector<std::array<int, 2>> depth_probes;  // pixels (in the panel) whose keys are read back
     bool timed = false;  // timed on its own (best of a few runs), for the error-against-time chart
 };
