@@ -7,7 +7,8 @@
 //                                default: a generated torus
 //   --mode NAME                  start in wireframe, flat, gouraud, perpixel, depth or normals
 //   --size WxH                   window size (default 800x600)
-//   --spin / --no-help           start spinning / with the key help hidden
+//   --spin / --still / --no-help start spinning (the default in a window opened by hand) /
+//                                not spinning / with the key help hidden
 //   --reference                  draw everything with the reference (skip the probes)
 //   --help                       the options and the keys
 //   --events "STEPS"             scripted mode (script.h): inject events, take screenshots, exit
@@ -43,7 +44,7 @@ struct Options {
     std::string model = "torus";
     Mode mode = Mode::kGouraud;
     int width = 800, height = 600;
-    bool spin = false, help = true;
+    bool spin = false, still = false, help = true;
     bool show_help = false;
     bool reference_only = false;
     bool probe_only = false;
@@ -58,7 +59,7 @@ constexpr const char* kModeNames[viewer::kModeCount] = {"wireframe", "flat", "go
 void usage(std::ostream& out, const char* argv0) {
     out << "usage: " << argv0
               << " [MODEL.obj | torus | sphere | big-torus | cube | soccer_ball ...]\n"
-                 "  [--mode wireframe|flat|gouraud|perpixel|depth|normals] [--size WxH] [--spin] [--no-help]\n"
+                 "  [--mode wireframe|flat|gouraud|perpixel|depth|normals] [--size WxH] [--spin | --still] [--no-help]\n"
                  "  [--reference] [--events \"STEPS\" | --script FILE] [--probe] [--bench [FRAMES]]\n"
                  "Scripted steps (';' or new lines): key NAME [N]; drag BUTTON X0 Y0 X1 Y1; wheel N; frames N;\n"
                  "  screenshot FILE; quit\n"
@@ -91,6 +92,8 @@ bool parse_options(int argc, char** argv, Options& o) {
             if (o.width < 64 || o.height < 64 || o.width > 8192 || o.height > 8192) return false;
         } else if (a == "--spin") {
             o.spin = true;
+        } else if (a == "--still") {
+            o.still = true;
         } else if (a == "--help" || a == "-h") {
             o.show_help = true;
         } else if (a == "--no-help") {
@@ -483,7 +486,9 @@ int main(int argc, char** argv) {
     if (!error.empty()) std::cout << "viewer: " << error << "\n";
     app.set_model(std::move(model), error);
     app.set_mode(o.mode);
-    if (o.spin) app.toggle_spin();
+    // A window opened by hand starts turning (space stops it); a script starts still, so that
+    // each of its screenshots shows only what its steps did.
+    if (o.spin || (!o.scripted && !o.still)) app.toggle_spin();
     if (!o.help) app.toggle_help();
     return run_window(app, o);
 }
