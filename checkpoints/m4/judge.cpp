@@ -725,10 +725,12 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             c.j.measures["pixels off the analytic checkerboard, % (reference " + num(std::round(ref_err * 10) / 10) + ")"] =
                 std::round(err * 10) / 10;
             if (panel.perspective_correct && err > ref_err + 2) {
-                c.add("perspective", "TODO 3: " + num(std::round(err * 10) / 10) +
+                c.add("perspective", "TODOs 3 and 8: " + num(std::round(err * 10) / 10) +
                                          "% of the floor's pixels are off the exact checkerboard (reference " +
                                          num(std::round(ref_err * 10) / 10) +
-                                         "%): interpolate u/w, v/w and 1/w on the screen, not u and v");
+                                         "%): interpolate u/w, v/w and 1/w on the screen, not u and v (the weights "
+                                         "of perspective_weights, TODO 3, used for every fragment by fill_triangle, "
+                                         "TODO 8; m4.weights checks TODO 3 alone)");
             }
         }
         if (s.checks.sphere_error) {

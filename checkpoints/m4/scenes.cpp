@@ -409,7 +409,9 @@ std::vector<Scene> build() {
     // ---- stiff and extreme cases ----
     {
         Scene s = picture("m4.zfight_formats", "Near 0.001, far 100000: z-fighting in four depth formats",
-                          "reversed-Z and 1/w keep precision far away; float z and 24-bit fixed point do not",
+                          "reversed-Z and 1/w keep precision far away; float z and 24-bit fixed point do not (the "
+                          "keys of depth_key, TODO 1, from z_ndc interpolated with the SCREEN weights in "
+                          "fill_triangle, TODO 8)",
                           {1, 8, 9}, 384, 96);
         const Format formats[4] = {Format::kFloatZ, Format::kReversedZ, Format::kFixed24, Format::kInverseW};
         for (int p = 0; p < 4; ++p) {

@@ -34,7 +34,7 @@ TEST_CASE("images match when few pixels differ, never when nothing is drawn", "[
     CHECK_FALSE(viewer::compare_images(raster::Image(5, 5, {1, 1, 1}), ref, 0, 0.03).yours);  // wrong size
 }
 
-TEST_CASE("numbers match within 1e-6 relative; NaN and a wrong count never do", "[viewer]") {
+TEST_CASE("numbers match within 1e-6 relative, and NaN or a wrong count never does", "[viewer]") {
     CHECK(viewer::compare_numbers({1, 2e6, 0}, {1 + 1e-9, 2e6 + 1, 0}).yours);
     CHECK_FALSE(viewer::compare_numbers({1, 2, 0}, {1, 2.01, 0}).yours);
     CHECK_FALSE(viewer::compare_numbers({std::nan("")}, {0}).yours);
@@ -122,7 +122,7 @@ TEST_CASE("the camera stays finite with 0 < near < far wherever it goes", "[view
     CHECK(cam.warning().empty());
 }
 
-TEST_CASE("models are fitted into the unit sphere without overflow; no size is refused", "[viewer]") {
+TEST_CASE("models are fitted into the unit sphere without overflow, and no size is refused", "[viewer]") {
     raster::Mesh m;
     m.positions = {{-1e308, 0, 0}, {1e308, 0, 0}, {0, 1e308, 5}};
     REQUIRE(viewer::fit_unit_sphere(m));
