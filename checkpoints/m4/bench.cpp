@@ -280,10 +280,15 @@ int main(int argc, char** argv) {
              "|---|---|---|---|---|---|---|---|---|---|\n";
     bool goals = true;
     for (const auto& [name, segments] : {std::pair{"sphere, ~2,600 triangles", 52}, std::pair{"sphere, ~1,000,000 triangles", 1002}}) {
-        // (BENCH_M4_SMALL or BENCH_M4_LARGE: one mesh alone, for profiling)
+        // (BENCH_M4_SMALL or BENCH_M4_LARGE: one mesh alone; BENCH_M4_REFERENCE_ONLY: no baselines)
         if ((std::getenv("BENCH_M4_SMALL") && segments > 100) || (std::getenv("BENCH_M4_LARGE") && segments < 100)) continue;
         const Scene sc = make_scene(segments);
-        const Result ref = run_reference(sc), tutorial = run_tutorial(sc), lean = run_baseline(sc);
+        const Result ref = run_reference(sc);
+        if (std::getenv("BENCH_M4_REFERENCE_ONLY")) {  // (for profiling the reference alone)
+            std::printf("%-30s reference %.3f ms per frame\n", name, ref.seconds * 1e3);
+            continue;
+        }
+        const Result tutorial = run_tutorial(sc), lean = run_baseline(sc);
         const double tris = double(sc.mesh.triangles.size());
         const double speedup = tutorial.seconds / ref.seconds, over_lean = lean.seconds / ref.seconds;
         // The pixel memory a frame moves: clearing every pixel (3 bytes of color, 4 of depth),
