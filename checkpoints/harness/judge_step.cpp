@@ -17,6 +17,16 @@ namespace cp {
 
 namespace {
 
+// True when every pixel of `img` has the color of the first (an empty image is not).
+bool one_color(const raster::Image& img) {
+    if (img.empty()) return false;
+    const std::uint8_t* p = img.data();
+    for (std::size_t i = 3; i < img.size_bytes(); i += 3) {
+        if (p[i] != p[0] || p[i + 1] != p[1] || p[i + 2] != p[2]) return false;
+    }
+    return true;
+}
+
 // ---- image comparison under a tolerance policy ----
 
 struct PolicyCount {
@@ -239,11 +249,18 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
         const raster::ImageMetrics m = raster::compare(actual, expected);
         rec.student = m;
         rec.has_metrics = true;
-        report << "  image error (yours vs expected):     " << fmt_metrics(m) << "\n";
         const auto ref_it = reference.images.find("main");
-        if (ref_it != reference.images.end()) {
-            rec.reference = raster::compare(ref_it->second, expected);
-            report << "  image error (reference vs expected): " << fmt_metrics(rec.reference) << "\n";
+        if (ref_it != reference.images.end()) rec.reference = raster::compare(ref_it->second, expected);
+        v.numbers_only = ref_it != reference.images.end() && rec.reference.same_size &&
+                         rec.reference.differing_pixels == 0 && m.same_size && m.differing_pixels == 0 &&
+                         one_color(expected);
+        if (v.numbers_only) {
+            report << "  no picture to compare: this checkpoint judges numbers\n";
+        } else {
+            report << "  image error (yours vs expected):     " << fmt_metrics(m) << "\n";
+            if (ref_it != reference.images.end()) {
+                report << "  image error (reference vs expected): " << fmt_metrics(rec.reference) << "\n";
+            }
         }
         if (!m.same_size) {
             findings.push_back({"image", "the image is " + std::to_string(actual.width()) + "x" +
@@ -340,15 +357,15 @@ void print_verdict(std::ostream& out, const Suite& suite, const Verdict& v) {
     out.unsetf(std::ios::fixed);
     const bool failing = !v.findings.empty();
     if (failing && !rec.output_dir.empty() && !v.pictures.empty()) {
-        out << "  pictures:\n";
         // The student's own pictures first, then the expected image and the difference.
         std::vector<std::string> names;
         for (const auto& [name, img] : v.pictures) {
-            if (name != "expected" && name != "diff") names.push_back(name);
+            if (name != "expected" && name != "diff" && !(v.numbers_only && name == "actual")) names.push_back(name);
         }
         for (const char* name : {"expected", "diff"}) {
-            if (v.pictures.count(name)) names.push_back(name);
+            if (v.pictures.count(name) && !v.numbers_only) names.push_back(name);
         }
+        if (!names.empty()) out << "  pictures:\n";
         for (const std::string& name : names) {
             out << "    " << (fs::path(rec.output_dir) / (name + ".png")).string()
                 << (name == "diff" ? "  (red: wrong; blue: differs, but allowed)" : "") << "\n";

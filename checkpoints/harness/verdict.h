@@ -28,6 +28,10 @@ struct Verdict {
     std::vector<Finding> findings;  // empty: pass
     std::string image_report;       // the "image error ..." and "tolerated: ..." lines, for the console
     std::string needs;              // " (needs TODOs 1-4)", or empty
+    // A checkpoint of numbers: its expected picture is one flat color, and the reference's and
+    // the student's main images match it exactly. The console then shows no image lines and
+    // no blank pictures (the findings are the whole verdict).
+    bool numbers_only = false;
     // The pictures worth keeping, by file stem: "actual" (the main image), each extra image
     // under its own name ("reversed", "stopped"...), "expected" and "diff".
     std::map<std::string, raster::Image> pictures;

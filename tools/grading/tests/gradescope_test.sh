@@ -2,8 +2,8 @@
 # The Gradescope package end to end, as Gradescope runs it, in a simulated /autograder
 # (AUTOGRADER_ROOT) as root with the `plain` sandbox (Gradescope's containers have no
 # namespaces): build the zip, unpack it, run setup.sh, put the reference in as the submission,
-# run run_autograder; results.json must give full marks with Gradescope's fields; then a
-# skeleton must score 0.
+# run run_autograder; results.json must give full marks with Gradescope's fields; then
+# milestone 1's skeleton alone must score 0.
 #   gradescope_test.sh <uid-unused>
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -39,8 +39,10 @@ hidden = [t for t in r["tests"] if "hidden.steep" in t["name"]]
 assert hidden and hidden[0]["visibility"] == "after_published", "the hidden checkpoint is missing or visible"
 print("reference:", r["score"], "of", total)
 PY
-cp "$root/milestone1_lines/lines.cpp" "$root/milestone2_triangles/triangles.cpp" \
-   "$root/milestone3_transforms/transforms.cpp" "$root/milestone4_depth_lighting/depth_lighting.cpp" "$ag/submission/"
+# The skeleton of milestone 1 alone (a student who has only begun): its checkpoints score 0,
+# and the milestones without a file score 0 too. (grade_test.sh grades the whole skeleton.)
+rm -f "$ag/submission/"*
+cp "$root/milestone1_lines/lines.cpp" "$ag/submission/"
 AUTOGRADER_ROOT=$ag RASTER_SANDBOX_MODE=plain bash "$ag/source/run_autograder" >"$work/run.log" 2>&1 || true
 python3 -c "
 import json,sys; r=json.load(open('$ag/results/results.json')); assert r['score']==0, r['score']; print('skeleton: 0')" ||
