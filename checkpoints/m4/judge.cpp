@@ -576,10 +576,7 @@ void judge_screen_weights(Ctx& c, const raster::Image& mine, const cp::Artifacts
     const double area = (t.screen[1].x - t.screen[0].x) * (t.screen[2].y - t.screen[0].y) -
                         (t.screen[1].y - t.screen[0].y) * (t.screen[2].x - t.screen[0].x);
     if (area == 0) return;
-    auto rounded = [](Vec3 v) {
-        auto ch = [](double x) { return std::uint8_t(std::clamp(x, 0.0, 255.0) + 0.5); };
-        return Color{ch(v.x), ch(v.y), ch(v.z)};
-    };
+    auto rounded = [](Vec3 v) { return Color{raster::to_channel(v.x), raster::to_channel(v.y), raster::to_channel(v.z)}; };
     auto close = [](Color a, Color b, int tol) {
         return std::abs(a.r - b.r) <= tol && std::abs(a.g - b.g) <= tol && std::abs(a.b - b.b) <= tol;
     };
