@@ -33,6 +33,11 @@
 //    hang, no write outside the image, bounded work), not which pixels it lights.
 //
 //  * Bad input. An endpoint that is NaN or infinite draws nothing (no crash, no hang).
+//    Nothing else extreme (1e300, DBL_MAX, subnormals, any rectangle given to clip_line)
+//    reaches undefined behaviour (such as a double converted to an int it does not fit) or
+//    writes outside the image. The project fuzzes the reference with
+//    such input under AddressSanitizer and UndefinedBehaviorSanitizer; `make fuzz-m1
+//    FUZZ_STUDENT=1` in your build folder does the same to your code (it needs clang).
 //
 //  * Anti-aliased lines (draw_line_aa), Xiaolin Wu's algorithm without endpoint weighting.
 //    Endpoints are used as given (no snapping). Let the major axis be x (swap the roles of x

@@ -41,7 +41,10 @@
 //  * Range and bad input. Triangles with a NaN or infinite coordinate, with |coordinate| >
 //    kMaxCoordinate, or with zero area (collinear or coincident vertices) draw nothing and
 //    never divide by zero. Work is proportional to the pixels inside the image: the bounding
-//    box is clamped to the image before any loop starts.
+//    box is clamped to the image before any loop starts. Nothing extreme (1e300, subnormals,
+//    vertices just past 2^24, n outside 1, 2, 4, 8) reaches undefined behaviour: the project
+//    fuzzes the reference with such input under AddressSanitizer and UndefinedBehaviorSanitizer,
+//    and `make fuzz-m2 FUZZ_STUDENT=1` in your build folder does the same to your code (clang).
 //
 //  * Barycentric coordinates. l0 = edge(v1, v2, p) / area2, l1 = edge(v2, v0, p) / area2,
 //    l2 = edge(v0, v1, p) / area2, where area2 = edge(v0, v1, v2): each is 1 at its own vertex

@@ -49,6 +49,11 @@
 //  * Bad input never crashes, hangs or returns NaN where this file says otherwise: see each
 //    function. The checkpoints give NaN-free but extreme input (far planes of 1e6, fields of
 //    view of 1 and 179 degrees, models 1e6 units away, vertices exactly in the camera's plane).
+//    Beyond that, what each function returns for NaN, infinities, coordinates near 1e308 and
+//    subnormals is said below (look_at, inverse, the projections, clipping), and draw_model
+//    drops any triangle or edge with a non-finite clip coordinate. The project fuzzes the
+//    reference with such input under AddressSanitizer and UndefinedBehaviorSanitizer; `make
+//    fuzz-m3 FUZZ_STUDENT=1` in your build folder does the same to your code (it needs clang).
 #pragma once
 
 #include <array>
@@ -103,7 +108,7 @@ Mat4 rotate(Vec3 axis, double radians);
 // condition number up to 1e12 (the checkpoint's is R1 * D * R2, with rotations R1, R2 and the
 // diagonal D = (1e6, 1, 1, 1e-6)) must give true with |a * out - I| <= 1e-3 in every entry.
 // Between the two the choice is yours (the reference reports a pivot <= 1e-14 times the
-// largest |entry|).
+// largest |entry|). A matrix with an entry that is NaN or infinite returns false too.
 bool inverse(const Mat4& a, Mat4& out);
 // TODO 3b: the inverse of a rigid transform (a rotation R and a translation t, last row
 // 0 0 0 1): R transposed, and -R^T t. No elimination, no test for singularity.
@@ -115,7 +120,12 @@ Mat4 rigid_inverse(const Mat4& a);
 // rows are r, u and -f (then 0 0 0 1), and its last column is -(R * eye), so eye goes to the
 // origin and target onto the -z axis. The basis r, u, -f is right-handed.
 // Fallbacks (never NaN):
+//  * eye not finite: the zero matrix (which draws nothing).
 //  * eye == target (or target - eye is not finite): f = (0, 0, -1).
+//  * Normalizing never loses a direction: a target - eye (or an up) whose length overflows
+//    (components near 1e308) or whose square underflows (2e-162 apart) is scaled by a power
+//    of two first, so f still has length 1 and points from eye to target.
+//  * The last column may overflow to +/-infinity for an eye beyond about 1e308 (never NaN).
 //  * up parallel to f, i.e. |cross(f, normalize(up))| < 1e-9, or up zero: up is replaced by
 //    the world axis x, y or z along which |f| has its smallest component (the first of them
 //    on a tie), e.g. looking straight down (f = (0, -1, 0)) uses up = (1, 0, 0).
@@ -126,11 +136,13 @@ Mat4 look_at(Vec3 eye, Vec3 target, Vec3 up);
 // With f = 1 / tan(fovy / 2): x' = f / aspect * x, y' = f * y,
 // z' = (far + near) / (near - far) * z + 2 * far * near / (near - far), w' = -z.
 // Invalid arguments (fovy outside (0, 180), aspect <= 0, near <= 0, far <= near, anything not
-// finite) give the zero matrix, which draws nothing.
+// finite) give the zero matrix, which draws nothing; so do arguments that would put an
+// infinite entry in the matrix (2 * far * near or f / aspect overflowing, e.g. far = DBL_MAX).
 Mat4 perspective(double fovy_degrees, double aspect, double near, double far);
 // Orthographic: the box [left, right] x [bottom, top] x [-near, -far] of view space becomes
 // the NDC cube; w' = 1. Invalid arguments (left == right, bottom == top, near == far,
-// anything not finite) give the zero matrix.
+// anything not finite) give the zero matrix; so do arguments that would put an infinite
+// entry in the matrix (a range so small that 2 / range overflows, e.g. near = 1e-309, far = 0).
 Mat4 orthographic(double left, double right, double bottom, double top, double near, double far);
 
 // ---- TODO 6: from clip space to pixels ----
@@ -144,9 +156,14 @@ Vec3 to_screen(Vec4 clip, int width, int height);
 // a to b, where the signed distances to the plane are da >= 0 > db (for the plane x <= w,
 // d = w - x), is a + (b - a) * da / (da - db). Empty (or fewer than 3 vertices) when nothing
 // is inside. The caller fans the result into triangles: (0, i, i + 1).
+// Huge coordinates: a plane distance such as w + x overflows to infinity for coordinates near
+// 1e308, and infinity / infinity makes NaN vertices. When some |coordinate| exceeds 2^500, the
+// reference scales every vertex by the same power of two first (exact, and the same points in
+// projective space), clips, and scales the result back: finite input gives finite output.
 std::vector<Vec4> clip_polygon(const std::vector<Vec4>& poly);
 // TODO 7b: the part of the segment a-b inside all six planes: false when none is, else true
-// with a and b moved onto the planes where they were outside.
+// with a and b moved onto the planes where they were outside. Huge coordinates as in
+// clip_polygon: finite ends give finite ends.
 bool clip_line(Vec4& a, Vec4& b);
 
 // ---- TODO 8: back-face culling, in pixel coordinates (y down), as pinned above ----

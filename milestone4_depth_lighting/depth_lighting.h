@@ -76,7 +76,12 @@
 //  * Bad input never crashes, hangs or writes outside the image: a vertex with NaN or
 //    infinite coordinates drops its triangle; zero-area and needle triangles draw what the
 //    fill rule says (often nothing) without dividing by zero; vertices behind the camera are
-//    clipped away in clip space (milestone 3), as are vertices beyond the far plane.
+//    clipped away in clip space (milestone 3), as are vertices beyond the far plane. Extreme
+//    values elsewhere: a w so small that 1 / w overflows (a near plane of 1e-320) falls back
+//    to the screen weights (fill_triangle), a uv of NaN or infinity is dark in checker(), an
+//    infinite light never meets a zero dot product (shade). The project fuzzes the reference
+//    with all of this under AddressSanitizer and UndefinedBehaviorSanitizer; `make fuzz-m4
+//    FUZZ_STUDENT=1` in your build folder does the same to your code (it needs clang).
 #pragma once
 
 #include <array>
@@ -169,7 +174,9 @@ struct Lighting {
 };
 // Lambert with ambient, in levels, unclamped and unrounded (see above). `normal` need not
 // have length 1 (normalize it; zero stays zero). A zero light vector (a directional light of
-// direction 0, a point light at `position`) lights nothing.
+// direction 0, a point light at `position`) lights nothing. A light with max(0, dot(N, L)) = 0
+// adds nothing at all, whatever its intensity: a zero normal under an infinite light gives
+// the ambient color, never NaN (infinity * 0).
 Vec3 shade(const Lighting& lighting, Color base, Vec3 position, Vec3 normal);
 // Each channel clamped to [0, 255] and rounded to nearest; NaN gives 0.
 Color to_color(Vec3 levels);
@@ -184,11 +191,15 @@ Color normal_color(Vec3 normal);
 
 // The checkerboard of the perspective checkpoints (given): kCheckerCells cells along u and
 // along v in [0, 1]; white where floor(u * cells) + floor(v * cells) is even, else dark.
+// Any uv is fine: the parity is taken in double (no conversion to an integer type can
+// overflow), a u or v whose u * cells is NaN or infinite gives the dark color, and beyond
+// 2^53 every double is an even integer.
 inline constexpr int kCheckerCells = 8;
 inline Color checker(Vec2 uv) {
-    const long long i = static_cast<long long>(std::floor(uv.x * kCheckerCells));
-    const long long j = static_cast<long long>(std::floor(uv.y * kCheckerCells));
-    return ((i + j) % 2 == 0) ? Color{255, 255, 255} : Color{32, 32, 32};
+    const double u = std::floor(uv.x * kCheckerCells), v = std::floor(uv.y * kCheckerCells);
+    if (!std::isfinite(u) || !std::isfinite(v)) return Color{32, 32, 32};
+    const bool even = std::fabs(std::fmod(u, 2.0)) == std::fabs(std::fmod(v, 2.0));  // exact
+    return even ? Color{255, 255, 255} : Color{32, 32, 32};
 }
 
 // ---- TODO 7: clipping with attributes ----
@@ -258,11 +269,16 @@ struct FillState {
 
 // Fills one triangle (both windings, milestone 2's snapping and fill rule) into the frame.
 // Per covered pixel center: the screen weights l; d from them; with depth_test, the key
-// depth_key(format, z_ndc, 1 / sum(l_i / w_i)) and the depth test; the color of its mode; then
+// depth_key(format, z_ndc, w) with the pixel's w = 1 / sum(l_i / w_i) and the depth test; the color of its mode; then
 // color and key written. A fragment's attributes are interpolated (and a kPerPixel fragment
 // lit) only when it gets a color: always without a depth test, and with one only when its key
 // is <= the stored key (a hidden fragment costs nothing; a tie needs the color to decide).
 // Counts fragments, depth tests and writes, shade() calls and interpolated values in `stats`.
+// Extreme w: where sum(l_i / w_i) is not > 0 or not finite (a w of 0, NaN, or so small that
+// 1 / w overflows, e.g. a vertex on a near plane of 1e-320), the fragment does what
+// perspective_weights does: its weights are the screen weights l, and its w is then
+// sum(l_i * w_i) (the same w they interpolate). So a tiny near plane draws like a small one,
+// and no NaN reaches an attribute through the weights.
 void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const FillState& state, Stats& stats);
 
 // ---- TODO 9: the pipeline ----

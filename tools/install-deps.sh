@@ -15,6 +15,14 @@ optional=(chromium)
 installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 has_candidate() { apt-cache policy "$1" 2>/dev/null | grep -q 'Candidate: [0-9]'; }
 
+# clang comes with its libFuzzer runtime (tools/fuzz.sh, `make fuzz`): libclang-rt-dev on
+# Debian 12; Ubuntu 22.04 ships it inside clang's own libclang-common package.
+for p in "$@"; do
+  if [ "$p" = clang ] && grep -qs '^ID=debian' /etc/os-release; then
+    packages+=(libclang-rt-dev)
+  fi
+done
+
 missing=()
 for p in "${packages[@]}"; do
   installed "$p" || missing+=("$p")

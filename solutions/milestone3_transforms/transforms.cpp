@@ -182,6 +182,11 @@ bool inverse(const Mat4& a, Mat4& out) {
         }
     }
     if (!(largest > 0) || !std::isfinite(largest)) return false;
+    for (const auto& row : a.m) {
+        for (double e : row) {
+            if (std::isnan(e)) return false;  // std::max above skips a NaN
+        }
+    }
     const double tiny = 1e-14 * largest;
     for (int col = 0; col < 4; ++col) {
         int pivot = col;
@@ -222,17 +227,33 @@ Mat4 rigid_inverse(const Mat4& a) {
 
 // ---- TODO 4: the camera ----
 
+// BEGIN SOLUTION
+namespace {
+
+// normalize(v), also where v's length overflows or its square underflows: then v is first
+// scaled by a power of two (exactly) so that its largest component is about 1. Zero or not
+// finite: the zero vector.
+Vec3 unit(Vec3 v) {
+    if (!raster::is_finite(v)) return {};
+    const double len = raster::length(v);
+    if (len > 1e-150 && std::isfinite(len)) return raster::normalize(v);
+    const double big = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (!(big > 0)) return {};
+    const int e = std::ilogb(big);
+    return raster::normalize(Vec3{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)});
+}
+
+}  // namespace
+// END SOLUTION
+
 Mat4 look_at(Vec3 eye, Vec3 target, Vec3 up) {
     // TODO 4: build f, r, u as transforms.h says (with both fallbacks), then the rows r, u, -f
     // and the last column -(r . eye), -(u . eye), f . eye.
     // BEGIN SOLUTION
-    Vec3 f = target - eye;
-    if (!raster::is_finite(f) || !(raster::length(f) > 0)) {
-        f = {0, 0, -1};
-    } else {
-        f = raster::normalize(f);
-    }
-    Vec3 side = raster::cross(f, raster::normalize(up));
+    if (!raster::is_finite(eye)) return Mat4{};
+    Vec3 f = unit(target - eye);
+    if (!(raster::length(f) > 0)) f = {0, 0, -1};
+    Vec3 side = raster::cross(f, unit(up));
     if (!raster::is_finite(side) || !(raster::length(side) >= 1e-9)) {
         const double ax = std::abs(f.x), ay = std::abs(f.y), az = std::abs(f.z);
         const Vec3 world_up = ax <= ay && ax <= az ? Vec3{1, 0, 0} : ay <= az ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
@@ -270,6 +291,7 @@ Mat4 perspective(double fovy_degrees, double aspect, double near, double far) {
     p.m[2][2] = (far + near) / (near - far);
     p.m[2][3] = 2 * far * near / (near - far);
     p.m[3][2] = -1;
+    if (!std::isfinite(p.m[0][0]) || !std::isfinite(p.m[2][3])) return Mat4{};  // f / aspect, 2 far near
     // END SOLUTION
     return p;
 }
@@ -291,6 +313,11 @@ Mat4 orthographic(double left, double right, double bottom, double top, double n
     p.m[1][3] = -(top + bottom) / (top - bottom);
     p.m[2][3] = -(far + near) / (far - near);
     p.m[3][3] = 1;
+    for (const auto& row : p.m) {
+        for (double e : row) {
+            if (!std::isfinite(e)) return Mat4{};  // a range so small (or large) it overflows
+        }
+    }
     // END SOLUTION
     return p;
 }
@@ -326,6 +353,17 @@ double distance(Vec4 p, int plane) {
     }
 }
 
+// Beyond this magnitude a sum of two coordinates (a plane distance) may overflow.
+constexpr double kHugeCoordinate = 0x1p500;
+
+// The power of two by which to scale points whose largest |coordinate| is `big` so that none
+// of the sums and differences clipping makes can overflow: 0 for ordinary points.
+int huge_exponent(double big) { return big > kHugeCoordinate && std::isfinite(big) ? std::ilogb(big) : 0; }
+
+double largest_coordinate(Vec4 p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), std::abs(p.w)}); }
+
+Vec4 scaled(Vec4 p, int e) { return {std::ldexp(p.x, e), std::ldexp(p.y, e), std::ldexp(p.z, e), std::ldexp(p.w, e)}; }
+
 }  // namespace
 // END SOLUTION
 
@@ -335,6 +373,14 @@ std::vector<Vec4> clip_polygon(const std::vector<Vec4>& poly) {
     std::vector<Vec4> out;
     // BEGIN SOLUTION
     out = poly;
+    // Huge coordinates (near 1e308) would overflow the plane distances into NaN vertices:
+    // scaling every vertex by the same power of two (exact) moves none in projective space.
+    double big = 0;
+    for (const Vec4& p : poly) big = std::max(big, largest_coordinate(p));
+    const int e = huge_exponent(big);
+    if (e != 0) {
+        for (Vec4& p : out) p = scaled(p, -e);
+    }
     for (int plane : kPlaneOrder) {
         if (out.empty()) break;
         std::vector<Vec4> next;
@@ -355,6 +401,9 @@ std::vector<Vec4> clip_polygon(const std::vector<Vec4>& poly) {
         out = std::move(next);
     }
     if (out.size() < 3) out.clear();
+    if (e != 0) {
+        for (Vec4& p : out) p = scaled(p, e);
+    }
     // END SOLUTION
     return out;
 }
@@ -363,9 +412,13 @@ bool clip_line(Vec4& a, Vec4& b) {
     // TODO 7b: Liang-Barsky: keep the parameter range [t0, t1] of a + t (b - a) inside every
     // plane; reject when it becomes empty.
     // BEGIN SOLUTION
+    // Huge coordinates: as in clip_polygon, the distances are taken of the ends scaled by a
+    // power of two, and the ends that move are moved along the scaled segment.
+    const int e = huge_exponent(std::max(largest_coordinate(a), largest_coordinate(b)));
+    const Vec4 sa = e != 0 ? scaled(a, -e) : a, sb = e != 0 ? scaled(b, -e) : b;
     double t0 = 0, t1 = 1;
     for (int plane : kPlaneOrder) {
-        const double da = distance(a, plane), db = distance(b, plane);
+        const double da = distance(sa, plane), db = distance(sb, plane);
         if (da < 0 && db < 0) return false;
         if (da < 0) {
             t0 = std::max(t0, da / (da - db));
@@ -374,9 +427,9 @@ bool clip_line(Vec4& a, Vec4& b) {
         }
     }
     if (t0 > t1) return false;
-    const Vec4 d = b - a, a0 = a;
-    if (t0 > 0) a = a0 + d * t0;
-    if (t1 < 1) b = a0 + d * t1;
+    const Vec4 d = sb - sa;
+    if (t0 > 0) a = e != 0 ? scaled(sa + d * t0, e) : sa + d * t0;
+    if (t1 < 1) b = e != 0 ? scaled(sa + d * t1, e) : sa + d * t1;
     return true;
     // SKELETON: return false;
     // END SOLUTION

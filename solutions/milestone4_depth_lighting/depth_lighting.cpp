@@ -161,8 +161,10 @@ Vec3 shade(const Lighting& lighting, Color base, Vec3 position, Vec3 normal) {
     for (const Light& light : lighting.lights) {
         const Vec3 l = light.kind == Light::Kind::kDirectional ? unit_or_zero(-light.vector)
                                                                : unit_or_zero(light.vector - position);
-        const double lambert = std::max(0.0, raster::dot(n, l));
-        sum = sum + light.intensity * lambert;
+        const double lambert = raster::dot(n, l);
+        // A light that does not reach the surface adds nothing, even an infinite one (inf * 0
+        // would be NaN).
+        if (lambert > 0) sum = sum + light.intensity * lambert;
     }
     levels = {base.r * sum.x, base.g * sum.y, base.b * sum.z};
     // END SOLUTION
@@ -363,19 +365,27 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
             const double l0 = double(e1) * inv_area, l1 = double(e2) * inv_area, l2 = double(e0) * inv_area;
             const double z = l0 * z0 + l1 * z1 + l2 * z2;
             const double q0 = l0 * iw0, q1 = l1 * iw1, q2 = l2 * iw2;
+            const double q = q0 + q1 + q2;
+            // perspective_weights' fallback: a sum that is not > 0 or not finite (a w of 0, NaN
+            // or below about 1e-308, whose 1 / w overflows) leaves the screen weights, and the
+            // pixel's w is then the one they interpolate.
+            const bool correctable = q > 0 && std::isfinite(q);
             std::uint32_t key = 0;
             if (test) {
                 ++tests;
                 // Only the 1/w format reads the pixel's w; the others skip the division.
-                key = key_of(format, z, format == DepthFormat::kInverseW ? 1 / (q0 + q1 + q2) : 1.0);
+                const double w_key = format != DepthFormat::kInverseW ? 1.0
+                                     : correctable                    ? 1 / q
+                                                                      : l0 * a0.w + l1 * a1.w + l2 * a2.w;
+                key = key_of(format, z, w_key);
                 if (key > depth[at] || key == kClearKey) continue;  // hidden: no color needed
             }
             Color c = state.flat_color;
             if (attributes > 0) {
                 shaded += attributes;
                 double p0 = l0, p1 = l1, p2 = l2;
-                if (perspective) {
-                    const double w_here = 1 / (q0 + q1 + q2);  // the clip-space w of this pixel
+                if (perspective && correctable) {
+                    const double w_here = 1 / q;  // the clip-space w of this pixel
                     p0 = q0 * w_here, p1 = q1 * w_here, p2 = q2 * w_here;
                 }
                 auto mix3 = [&](Vec3 v0, Vec3 v1, Vec3 v2) { return v0 * p0 + v1 * p1 + v2 * p2; };
