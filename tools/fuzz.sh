@@ -61,8 +61,9 @@ for m in "${milestones[@]}"; do
   work="$build/corpus/${m}${suffix}" artifacts="$build/artifacts/${m}${suffix}" log="$build/logs/${m}${suffix}.log"
   mkdir -p "$work" "$artifacts" "$(dirname "$log")"
   echo "== fuzzing $m ($([ "$student" = 1 ] && echo "your code" || echo reference)) for $seconds s; log: $log"
-  # -timeout: a hang; the harness itself stops any input slower than 500 ms.
-  "$exe" -max_total_time="$seconds" -timeout=2 -rss_limit_mb=2048 -max_len=512 -print_final_stats=1 \
+  # -timeout (wall clock): a hang; the harness itself stops any input that takes more than
+  # 500 ms of CPU time.
+  "$exe" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=512 -print_final_stats=1 \
     -artifact_prefix="$artifacts/" "$work" "$root/tools/fuzz/corpus/$m" >"$log" 2>&1
   rc=$?
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
