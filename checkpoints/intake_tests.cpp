@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include <catch2/catch.hpp>
+#include "raster_catch.h"
 
 #include "harness/checkpoint.h"
 #include "raster/io.h"
@@ -75,7 +75,7 @@ TEST_CASE("symbolic links are refused, for files and for the folder", "[intake]"
     f.write("values.txt", "seconds 0\n");
     f.write("real.png", png_of(48, 48));
     fs::create_symlink(f.dir / "real.png", f.dir / "main.png");
-    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), Catch::Contains("symbolic link"));
+    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), raster_test::contains("symbolic link"));
     Folder g;
     fs::create_directory_symlink(f.dir, g.dir / "out");
     CHECK_THROWS_AS(cp::read_artifacts((g.dir / "out").string(), rules_48()), cp::ArtifactError);
@@ -84,30 +84,30 @@ TEST_CASE("symbolic links are refused, for files and for the folder", "[intake]"
 TEST_CASE("a FIFO is refused without waiting for a writer", "[intake]") {
     Folder f;
     REQUIRE(::mkfifo((f.dir / "values.txt").c_str(), 0644) == 0);
-    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), Catch::Contains("not a plain file"));
+    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), raster_test::contains("not a plain file"));
 }
 
 TEST_CASE("files beyond the size cap are refused", "[intake]") {
     Folder f;
     f.write("values.txt", std::string(5u << 20, '\n'));
-    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), Catch::Contains("allowed"));
+    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), raster_test::contains("allowed"));
 }
 
 TEST_CASE("a PNG of another size or a corrupt one is refused before decoding", "[intake]") {
     Folder f;
     f.write("values.txt", "seconds 0\n");
     f.write("main.png", png_of(64, 48));
-    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), Catch::Contains("expected 48x48"));
+    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), raster_test::contains("expected 48x48"));
     // A header claiming 60000 x 60000 pixels.
     std::string bomb = png_of(48, 48);
     bomb[16] = 0, bomb[17] = 0, bomb[18] = char(0xea), bomb[19] = 0x60;
     bomb[20] = 0, bomb[21] = 0, bomb[22] = char(0xea), bomb[23] = 0x60;
     f.write("main.png", bomb);
-    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), Catch::Contains("60000x60000"));
+    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), raster_test::contains("60000x60000"));
     f.write("main.png", png_of(48, 48).substr(0, 40));  // truncated
     CHECK_THROWS_AS(cp::read_artifacts(f.dir.string(), rules_48()), cp::ArtifactError);
     f.write("main.png", "GIF89a not a png at all, but long enough to have a header");
-    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), Catch::Contains("not a PNG"));
+    CHECK_THROWS_WITH(cp::read_artifacts(f.dir.string(), rules_48()), raster_test::contains("not a PNG"));
 }
 
 TEST_CASE("garbage lines in values.txt are ignored, not trusted", "[intake]") {

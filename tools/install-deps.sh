@@ -4,7 +4,7 @@
 # everything is already there.
 set -euo pipefail
 
-packages=(cmake make g++ pkg-config catch2 libstb-dev bubblewrap procps zip unzip python3 libtinyobjloader-dev
+packages=(cmake make g++ pkg-config catch2 libstb-dev bubblewrap procps zip unzip python3 git libtinyobjloader-dev
           libgif-dev libglm-dev nlohmann-json3-dev
           libsdl2-dev xvfb xauth  # the viewer (tools/viewer) and its test under a virtual X server
           "$@")
@@ -12,8 +12,14 @@ packages=(cmake make g++ pkg-config catch2 libstb-dev bubblewrap procps zip unzi
 # distribution has them as a real package, and the tests that need them skip otherwise.
 optional=(chromium)
 
-installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
-has_candidate() { apt-cache policy "$1" 2>/dev/null | grep -q 'Candidate: [0-9]'; }
+installed() { [ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null)" = "install ok installed" ]; }
+# The policy is read whole before it is searched: `grep -q` in a pipe would stop reading at the
+# first match, apt-cache would die of SIGPIPE, and pipefail would count that as "no candidate".
+has_candidate() {
+  local policy
+  policy=$(apt-cache policy "$1" 2>/dev/null) || return 1
+  grep -q 'Candidate: [0-9]' <<<"$policy"
+}
 
 # clang comes with its libFuzzer runtime (tools/fuzz.sh, `make fuzz`): libclang-rt-dev on
 # Debian 12; Ubuntu 22.04 ships it inside clang's own libclang-common package.
@@ -50,6 +56,9 @@ if [ ${#missing[@]} -gt 0 ]; then
   echo "Installing: ${missing[*]}"
   "${sudo[@]}" apt-get update -qq
   "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+if [ ${#missing[@]} -eq 0 ] && [ ${#missing_optional[@]} -gt 0 ]; then
+  "${sudo[@]}" apt-get update -qq  # the package lists may be older than the distribution's
 fi
 for p in "${missing_optional[@]}"; do
   if has_candidate "$p"; then

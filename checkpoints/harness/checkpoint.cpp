@@ -9,10 +9,13 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
 
-#include <catch2/catch.hpp>
+#include "raster_catch.h"
 
 #include "harness/record.h"
 #include "harness/verdict.h"
@@ -31,26 +34,31 @@ Artifacts render_timed(const std::function<Artifacts(const std::string&)>& rende
     return a;
 }
 
-class CheckpointInvoker : public Catch::ITestInvoker {
-public:
-    CheckpointInvoker(const Suite* suite, std::string id) : suite_(suite), id_(std::move(id)) {}
-    void invoke() const override { run_checkpoint(*suite_, id_); }
+// Every registered checkpoint, by its test case's name (its id).
+std::map<std::string, std::pair<const Suite*, std::string>>& registered() {
+    static std::map<std::string, std::pair<const Suite*, std::string>> by_name;
+    return by_name;
+}
 
-private:
-    const Suite* suite_;
-    std::string id_;
-};
+// The body of every checkpoint's test case: REGISTER_TEST_CASE (Catch2 2 and 3 alike) takes a
+// plain function, so the checkpoint is found by the name of the test case that is running.
+void run_registered_checkpoint() {
+    const auto found = registered().find(raster_test::current_test_name());
+    if (found == registered().end()) throw std::logic_error("no checkpoint registered under this name");
+    run_checkpoint(*found->second.first, found->second.second);
+}
 
 }  // namespace
 
 bool register_suite(const Suite& suite) {
-    static std::vector<std::unique_ptr<Suite>> suites;  // test cases point into these
+    static std::vector<std::unique_ptr<Suite>> suites;  // the registry points into these
     suites.push_back(std::make_unique<Suite>(suite));
     const Suite* kept = suites.back().get();
     const std::string tags = "[" + kept->milestone + "]";
     for (const std::string& id : kept->ids) {
-        Catch::getMutableRegistryHub().registerTest(Catch::makeTestCase(
-            new CheckpointInvoker(kept, id), "", Catch::NameAndTags{id, tags}, CATCH_INTERNAL_LINEINFO));
+        if (!registered().emplace(id, std::make_pair(kept, id)).second)
+            throw std::logic_error("checkpoint " + id + " is registered twice");
+        REGISTER_TEST_CASE(run_registered_checkpoint, id, tags);
     }
     return true;
 }

@@ -5,7 +5,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <catch2/catch.hpp>
+#include "raster_catch.h"
 #include <cmath>
 #include <numbers>
 

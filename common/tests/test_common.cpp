@@ -1,5 +1,5 @@
 // Unit tests of the shared library: what every milestone and the checkpoints rely on.
-#include <catch2/catch.hpp>
+#include "raster_catch.h"
 
 #include <cmath>
 #include <cstdio>
@@ -80,7 +80,7 @@ TEST_CASE("PNG and PPM: round trip, clear errors for missing and corrupt files")
         std::ofstream f(bad, std::ios::binary);
         f << "\x89PNG\r\n\x1a\n this is not really a PNG";
     }
-    CHECK_THROWS_WITH(read_png(bad), Catch::Contains("corrupt.png"));
+    CHECK_THROWS_WITH(read_png(bad), raster_test::contains("corrupt.png"));
     CHECK_THROWS_AS(write_png("/nonexistent-dir/x.png", img), ImageIoError);
 
     const std::string ppm = temp_path("out.ppm");

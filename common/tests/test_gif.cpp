@@ -1,6 +1,6 @@
 // Unit tests of the GIF writer (and the reader the tests and gallery use), checked through
 // giflib directly as well, so a bug shared by writer and reader cannot hide.
-#include <catch2/catch.hpp>
+#include "raster_catch.h"
 
 #include <gif_lib.h>
 #include <unistd.h>

@@ -1,6 +1,6 @@
 // Unit tests of meshes: the shipped OBJ models, the loader's handling of bad files, and the
 // generators. The conventions tested here are the ones raster/mesh.h names.
-#include <catch2/catch.hpp>
+#include "raster_catch.h"
 
 #include <unistd.h>
 
@@ -295,26 +295,26 @@ TEST_CASE("obj: bad files give a clear MeshError naming the problem") {
     for (const Case& c : cases) {
         INFO(c.what << ": " << c.text);
         const std::string message = load_error(c.text);
-        CHECK_THAT(message, Catch::Contains(c.message));
-        CHECK_THAT(message, Catch::StartsWith("<OBJ text>"));
+        CHECK_THAT(message, raster_test::contains(c.message));
+        CHECK_THAT(message, raster_test::starts_with("<OBJ text>"));
     }
     // The line is named when known.
-    CHECK_THAT(load_error(kTriangle + "\n\nf 1 2\n"), Catch::StartsWith("<OBJ text>:6:"));
+    CHECK_THAT(load_error(kTriangle + "\n\nf 1 2\n"), raster_test::starts_with("<OBJ text>:6:"));
 }
 
 TEST_CASE("obj: missing files, directories and bad paths") {
-    CHECK_THROWS_WITH(load_obj("/nonexistent_dir_raster/model.obj"), Catch::Contains("no such file"));
-    CHECK_THROWS_WITH(load_obj(fs::temp_directory_path().string()), Catch::Contains("is a directory"));
-    if (fs::exists("/dev/zero")) CHECK_THROWS_WITH(load_obj("/dev/zero"), Catch::Contains("not a regular file"));
+    CHECK_THROWS_WITH(load_obj("/nonexistent_dir_raster/model.obj"), raster_test::contains("no such file"));
+    CHECK_THROWS_WITH(load_obj(fs::temp_directory_path().string()), raster_test::contains("is a directory"));
+    if (fs::exists("/dev/zero")) CHECK_THROWS_WITH(load_obj("/dev/zero"), raster_test::contains("not a regular file"));
     const std::string path = temp_obj("bad");
     {
         std::ofstream(path) << kTriangle << "f 1 2 9\n";
     }
-    CHECK_THROWS_WITH(load_obj(path), Catch::StartsWith(path + ":4:"));
+    CHECK_THROWS_WITH(load_obj(path), raster_test::starts_with(path + ":4:"));
     {
         std::ofstream(path, std::ios::trunc) << "";
     }
-    CHECK_THROWS_WITH(load_obj(path), Catch::Contains("empty file"));
+    CHECK_THROWS_WITH(load_obj(path), raster_test::contains("empty file"));
     fs::remove(path);
 }
 
@@ -351,19 +351,19 @@ TEST_CASE("check_mesh: rejects what a renderer could trip on") {
     CHECK_NOTHROW(check_mesh(m));
     Mesh bad = m;
     bad.positions[0].x = std::numeric_limits<double>::quiet_NaN();
-    CHECK_THROWS_WITH(check_mesh(bad), Catch::Contains("not finite"));
+    CHECK_THROWS_WITH(check_mesh(bad), raster_test::contains("not finite"));
     bad = m;
     bad.faces[0][0] = 8;
     CHECK_THROWS_AS(check_mesh(bad), MeshError);
     bad = m;
     bad.faces[0].resize(2);
-    CHECK_THROWS_WITH(check_mesh(bad), Catch::Contains("at least 3"));
+    CHECK_THROWS_WITH(check_mesh(bad), raster_test::contains("at least 3"));
     bad = m;
     bad.triangles.pop_back();
-    CHECK_THROWS_WITH(check_mesh(bad), Catch::Contains("fan"));
+    CHECK_THROWS_WITH(check_mesh(bad), raster_test::contains("fan"));
     bad = m;
     bad.normals.assign(3, Vec3{0, 0, 1});
-    CHECK_THROWS_WITH(check_mesh(bad), Catch::Contains("normals"));
+    CHECK_THROWS_WITH(check_mesh(bad), raster_test::contains("normals"));
 }
 
 TEST_CASE("generators: uv sphere") {

@@ -1,4 +1,4 @@
-#include <catch2/catch.hpp>
+#include "raster_catch.h"
 
 #include <cmath>
 

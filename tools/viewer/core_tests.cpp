@@ -1,7 +1,7 @@
 // Unit tests of the viewer's parts that need no window: the probes' comparisons, the plan of
 // who draws what, the camera's limits, fitting a model, the script parser. The window itself
 // is tested by viewer_test.sh.
-#include <catch2/catch.hpp>
+#include "raster_catch.h"
 
 #include <signal.h>
 
