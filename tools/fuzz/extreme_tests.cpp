@@ -1,7 +1,7 @@
 // What extreme input gives, pinned in the headers and held here on the reference: each case
 // below was found by fuzzing (issue 19) and is kept as a test. The fuzzing harnesses check the
 // same promises on random input (tools/fuzz/fuzz_m*.cpp).
-#include <catch2/catch.hpp>
+#include "raster_catch.h"
 
 #include <cfloat>
 #include <cmath>
