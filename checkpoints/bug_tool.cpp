@@ -42,6 +42,7 @@ namespace {
 
 struct BugSource {
     std::string name, summary, lesson, fix, says;
+    std::string blames;  // "TODO 1: multiplication order, matrix": what every failing checkpoint must name
     std::vector<std::string> must_fail;
     fs::path file, program;
 };
@@ -87,6 +88,7 @@ BugSource read_bug(const fs::path& file, const fs::path& program) {
         if (key == "lesson") b.lesson = v;
         if (key == "fix") b.fix = v;
         if (key == "says") b.says = v;
+        if (key == "blames") b.blames = v;
         if (key == "must_fail") {
             std::istringstream w(v);
             for (std::string id; w >> id;) b.must_fail.push_back(id);
@@ -306,9 +308,10 @@ Built build_library(const std::string& m, const fs::path& root, const fs::path& 
     return b;
 }
 
-// The gallery picture of a bug: expected | with the bug | where they differ (red: the bug's
-// pixel is darker than expected, e.g. missing; green: brighter, e.g. extra; on the expected
-// picture dimmed), each magnified with sharp pixels. Wide scenes stack the three vertically.
+// The gallery picture of a bug: expected | with the bug | where they differ, in the colors of
+// make check's diff.png (cp::kDiffLegend: red where the bug's pixel differs by more than
+// kPixelNoise levels, blue where it differs by less, on the expected picture dimmed), each
+// magnified with sharp pixels. Wide scenes stack the three vertically.
 raster::Image gallery_picture(const raster::Image& expected, const raster::Image& bug) {
     const int w = expected.width(), h = expected.height();
     const int k = std::max(1, 192 / std::max(w, h));
@@ -316,7 +319,6 @@ raster::Image gallery_picture(const raster::Image& expected, const raster::Image
     const int gap = 6;
     const int W = vertical ? w * k : 3 * w * k + 2 * gap, H = vertical ? 3 * h * k + 2 * gap : h * k;
     raster::Image out(W, H, raster::Color{90, 90, 90});
-    auto luminance = [](raster::Color c) { return c.r + c.g + c.b; };
     for (int panel = 0; panel < 3; ++panel) {
         const int ox = vertical ? 0 : panel * (w * k + gap), oy = vertical ? panel * (h * k + gap) : 0;
         for (int y = 0; y < h; ++y) {
@@ -326,9 +328,9 @@ raster::Image gallery_picture(const raster::Image& expected, const raster::Image
                 if (panel == 2) {
                     const int d = std::max({std::abs(e.r - g.r), std::abs(e.g - g.g), std::abs(e.b - g.b)});
                     if (d > cp::kPixelNoise) {
-                        c = luminance(g) < luminance(e) ? raster::Color{255, 40, 40}
-                            : luminance(g) > luminance(e) ? raster::Color{40, 255, 40}
-                                                          : raster::Color{255, 255, 40};
+                        c = cp::kDiffWrong;
+                    } else if (d > 0) {
+                        c = cp::kDiffAllowed;
                     } else {
                         c = {static_cast<std::uint8_t>(e.r / 4), static_cast<std::uint8_t>(e.g / 4),
                              static_cast<std::uint8_t>(e.b / 4)};
@@ -370,8 +372,10 @@ std::string gallery_text(const cp::BugLibrary& lib, const fs::path& root, const 
     out << kBegin << ": written by `make bug-pictures` from checkpoints/" << lib.milestone
         << "/bugs/*.bug; the project tests check it -->\n"
         << "Each mistake below is one of the deliberate bugs the project tests its checkpoints with. The picture "
-           "shows the checkpoint that catches it: the expected image, the image with the bug, and where they differ "
-           "(red: darker than expected, such as a missing pixel; green: brighter, such as an extra one). When a "
+           "shows the checkpoint that catches it: the expected image, the image with the bug, and where they differ, "
+           "in the colors of `make check`'s diff.png ("
+        << cp::kDiffLegend << "; here blue marks differences of at most " << cp::kPixelNoise
+        << " levels). When a "
            "checkpoint of yours fails with a picture that matches one of these closely, `make check` names the bug "
            "and the section to reread.\n\n"
         << "How often that diagnosis is right, measured on the bugs themselves: " << cp::rates_text(lib.rates)
@@ -588,6 +592,78 @@ int named(const std::vector<std::string>& args) {
     return bad ? 1 : 0;
 }
 
+// The TODO numbers of every "(TODO 4)", "(TODOs 1-2)" or "(TODOs 5, 6)" in a finding line.
+std::vector<std::set<int>> todo_labels(const std::string& line) {
+    std::vector<std::set<int>> out;
+    for (std::size_t at = line.find("(TODO"); at != std::string::npos; at = line.find("(TODO", at + 1)) {
+        const std::size_t end = line.find(')', at);
+        if (end == std::string::npos) break;
+        std::string list = line.substr(at + 5, end - at - 5);
+        if (!list.empty() && list[0] == 's') list.erase(0, 1);
+        std::set<int> todos;
+        std::istringstream in(list);
+        for (std::string part; std::getline(in, part, ',');) {
+            int lo = 0, hi = 0;
+            char dash = 0;
+            std::istringstream p(part);
+            if (!(p >> lo)) continue;
+            hi = lo;
+            if (p >> dash >> hi && dash != '-') hi = lo;
+            for (int t = lo; t <= hi && t - lo < 100; ++t) todos.insert(t);
+        }
+        if (!todos.empty()) out.push_back(todos);
+    }
+    return out;
+}
+
+// bug_tool blames <work-dir> <file.bug> <program>: runs the bug on every checkpoint; each one
+// that fails must tag one of the concepts of the bug's "blames:" line, and no finding of it may
+// name a TODO other than the bug's (a later checkpoint sending the student to the wrong TODO).
+int blames(const std::vector<std::string>& args) {
+    if (args.size() != 4) throw std::runtime_error("blames: bad arguments");
+    const BugSource src = read_bug(args[2], fs::absolute(args[3]));  // run from its own folder
+    const auto colon = src.blames.find(':');
+    if (src.blames.rfind("TODO ", 0) != 0 || colon == std::string::npos) {
+        throw std::runtime_error(src.file.string() + ": blames: must read 'TODO <n>: <concept>[, <concept>...]'");
+    }
+    const std::set<int> allowed = todo_labels("(" + src.blames.substr(0, colon) + ")").at(0);
+    std::vector<std::string> concepts;
+    std::istringstream in(src.blames.substr(colon + 1));
+    for (std::string c; std::getline(in, c, ',');) concepts.push_back(trim(c));
+    const BugRun r = run_bug(src, fs::absolute(args[1]));
+    int failing = 0, bad = 0;
+    for (const std::string& id : r.ids) {
+        const auto it = r.records.find(id);
+        if (it == r.records.end() || it->second.status == "crashed") {
+            std::cout << id << ": no verdict (crashed)\n";
+            ++bad;
+            continue;
+        }
+        const cp::Record& rec = it->second;
+        if (rec.status != "fail") continue;
+        ++failing;
+        std::vector<std::string> problems;
+        const std::string tags = "," + rec.concepts + ",";
+        if (std::none_of(concepts.begin(), concepts.end(), [&](const std::string& c) { return tags.find("," + c + ",") != std::string::npos; })) {
+            problems.push_back("its concepts are '" + rec.concepts + "', none of '" + src.blames.substr(colon + 1) + "'");
+        }
+        for (const std::string& line : rec.findings) {
+            for (const std::set<int>& label : todo_labels(line)) {
+                if (std::none_of(label.begin(), label.end(), [&](int t) { return allowed.count(t) > 0; })) {
+                    problems.push_back("it blames another TODO: " + line);
+                    break;
+                }
+            }
+        }
+        std::cout << id << ": " << (problems.empty() ? "names " + src.blames : "WRONG") << "\n";
+        for (const std::string& p : problems) std::cout << "    " << p << "\n";
+        for (const std::string& line : rec.findings) std::cout << "      " << line << "\n";
+        bad += problems.empty() ? 0 : 1;
+    }
+    std::cout << src.name << ": " << failing - bad << " of " << failing << " failing checkpoints name " << src.blames << "\n";
+    return bad ? 1 : 0;
+}
+
 int rates(const std::vector<std::string>& args) {
     if (args.size() != 4) throw std::runtime_error("rates: bad arguments");
     const std::string m = args[1];
@@ -623,6 +699,7 @@ int main(int argc, char** argv) {
         if (!args.empty() && args[0] == "gallery") return gallery(args);
         if (!args.empty() && args[0] == "rates") return rates(args);
         if (!args.empty() && args[0] == "named") return named(args);
+        if (!args.empty() && args[0] == "blames") return blames(args);
     } catch (const std::exception& e) {
         std::cerr << "bug_tool: " << e.what() << "\n";
         return 1;
@@ -630,6 +707,7 @@ int main(int argc, char** argv) {
     std::cerr << "usage: bug_tool update|check <m> <repo-root> <lesson.md> <work-dir> <skeleton-program> (<file.bug> <program>)...\n"
                  "       bug_tool gallery --update|--check <m> <repo-root> <lesson.md>\n"
                  "       bug_tool named <m> <work-dir> (<file.bug> <program>)...\n"
-                 "       bug_tool rates <m> <min-hits-percent> <max-wrong-percent>\n";
+                 "       bug_tool rates <m> <min-hits-percent> <max-wrong-percent>\n"
+                 "       bug_tool blames <work-dir> <file.bug> <program>\n";
     return 2;
 }

@@ -478,7 +478,9 @@ int cmd_report(const std::vector<std::string>& args) {
                 const fs::path pf = mdir / "verdicts" / cname / (pic + ".png");
                 if (pic.find('/') != std::string::npos || !fs::is_regular_file(pf)) continue;
                 sections << "<figure><img alt=\"" << html_escape(pic) << "\" src=\"data:image/png;base64,"
-                         << base64(read_text(pf)) << "\"><figcaption>" << html_escape(pic) << "</figcaption></figure>";
+                         << base64(read_text(pf)) << "\"><figcaption>"
+                         << html_escape(pic == "diff" ? std::string("diff (") + cp::kDiffLegend + ")" : pic)
+                         << "</figcaption></figure>";
             }
             sections << "</section>\n";
         }

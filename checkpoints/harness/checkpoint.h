@@ -68,6 +68,13 @@ struct Artifacts {
 inline constexpr long long kStrayWriteBudget = 1'000'000;
 inline constexpr const char* kRunawayKey = "runaway";
 
+// Every difference picture of the project (make check's diff.png, the HTML reports, the lessons'
+// troubleshooting galleries) uses these colors, and this legend is printed beside each one.
+inline constexpr raster::Color kDiffWrong{255, 40, 40};     // differs where it must not
+inline constexpr raster::Color kDiffAllowed{70, 150, 255};  // differs where the rule allows it
+inline constexpr const char* kDiffLegend =
+    "red: differs where it must not; blue: differs, but within what the rule allows; dimmed: as expected";
+
 // How strictly the main image must match the expected PNG. Pixels outside `lenient` must
 // match to within strict_channel_diff levels; pixels inside it may differ, but at most
 // max_lenient_diffs of them. `why` says why this policy is fair; it is printed on failure.
@@ -102,6 +109,11 @@ struct Judgement {
     // Pictures the judge made from the artifacts (e.g. a chart of error against run time),
     // shown beside the checkpoint's own pictures in every report.
     std::map<std::string, raster::Image> pictures;
+    // The judge found that a TODO this scene is drawn with fails the checks of its own
+    // checkpoint, and said "fix TODO N first (see <checkpoint>)". Every other guess about the
+    // picture rests on that TODO, so the harness adds none of its own (no "drew nothing: TODO
+    // 11 is not written yet" when the matrices put every vertex off screen).
+    bool upstream_failed = false;
 };
 
 // One function a student writes, as the checkpoints see it: its name (as the render half

@@ -237,8 +237,10 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
                                              " writes outside the image: a loop runs past its end point. "
                                              "Check the step signs and the loop's stop condition"});
     }
-    const std::vector<Finding> nothing = nothing_drawn_findings(suite, student, reference);
-    findings.insert(findings.begin(), nothing.begin(), nothing.end());
+    if (!judgement.upstream_failed) {
+        const std::vector<Finding> nothing = nothing_drawn_findings(suite, student, reference);
+        findings.insert(findings.begin(), nothing.begin(), nothing.end());
+    }
     if (!expected_in.problem.empty()) findings.push_back({"setup", expected_in.problem});
 
     const auto main_it = student.images.find("main");
@@ -351,7 +353,15 @@ void write_pictures(const std::string& dir, Verdict& v) {
 void print_verdict(std::ostream& out, const Suite& suite, const Verdict& v) {
     const Record& rec = v.record;
     out << "checkpoint " << rec.id << ": " << rec.title << v.needs << "\n" << v.image_report;
-    for (const auto& [name, value] : rec.measures) out << "  " << name << ": " << value << "\n";
+    for (const auto& [name, value] : rec.measures) {
+        std::ostringstream text;  // a count as "84", anything else with six significant digits
+        if (std::isfinite(value) && value == std::round(value) && std::abs(value) < 1e15) {
+            text << static_cast<long long>(value);
+        } else {
+            text << std::setprecision(6) << value;
+        }
+        out << "  " << name << ": " << text.str() << "\n";
+    }
     out << "  render time: yours " << std::fixed << std::setprecision(3) << rec.student_ms << " ms, reference "
         << rec.reference_ms << " ms\n";
     out.unsetf(std::ios::fixed);
@@ -368,7 +378,7 @@ void print_verdict(std::ostream& out, const Suite& suite, const Verdict& v) {
         if (!names.empty()) out << "  pictures:\n";
         for (const std::string& name : names) {
             out << "    " << (fs::path(rec.output_dir) / (name + ".png")).string()
-                << (name == "diff" ? "  (red: wrong; blue: differs, but allowed)" : "") << "\n";
+                << (name == "diff" ? std::string("  (") + kDiffLegend + ")" : std::string()) << "\n";
         }
     }
     if (failing) {

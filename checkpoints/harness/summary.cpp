@@ -19,11 +19,24 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/checkpoint.h"
 #include "harness/diagnosis.h"
 #include "harness/html.h"
 #include "harness/record.h"
 
 namespace {
+
+// A measure as a reader expects it: a count as a whole number ("84", not "84.0000"), any other
+// value with four significant digits, whatever the stream's flags are.
+std::string measure_text(double v) {
+    std::ostringstream s;
+    if (std::isfinite(v) && v == std::round(v) && std::abs(v) < 1e15) {
+        s << static_cast<long long>(v);
+    } else {
+        s << std::setprecision(4) << v;
+    }
+    return s.str();
+}
 
 using cp::html_escape;
 
@@ -69,7 +82,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         for (const auto& [name, v] : r.measures) {
             if (!any_measure) html << "<h2>Measured error against run time</h2>\n<table><tr><th>checkpoint<th>measure<th>value<th>your ms<th>reference ms</tr>\n";
             any_measure = true;
-            html << "<tr><td>" << html_escape(r.id) << "<td>" << html_escape(name) << "<td>" << std::setprecision(4) << v
+            html << "<tr><td>" << html_escape(r.id) << "<td>" << html_escape(name) << "<td>" << measure_text(v)
                  << "<td>" << std::setprecision(3) << r.student_ms << "<td>" << r.reference_ms << "</tr>\n";
         }
     }
@@ -108,7 +121,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
             const std::filesystem::path p = std::filesystem::path(r.output_dir) / (name + ".png");
             if (!std::filesystem::exists(p)) continue;
             const std::string caption =
-                name == "diff" ? "diff: red = wrong, blue = differs but allowed, dimmed = as expected" : name;
+                name == "diff" ? std::string("diff (") + cp::kDiffLegend + ")" : name;
             html << "<figure><a href=\"" << html_escape(p.string()) << "\"><img alt=\"" << html_escape(r.id + " " + name)
                  << "\" src=\"" << html_escape(p.string()) << "\"></a><figcaption>" << html_escape(caption)
                  << "</figcaption></figure>";
@@ -246,8 +259,8 @@ int main(int argc, char** argv) {
             if (name.find("(reference ") != std::string::npos) continue;
             if (!any_measure) std::cout << "measured error against run time:\n";
             any_measure = true;
-            std::cout << "  " << std::left << std::setw(26) << r.id << std::right << name << " " << std::setprecision(4)
-                      << v << "   your " << std::setprecision(3) << r.student_ms << " ms, reference " << r.reference_ms
+            std::cout << "  " << std::left << std::setw(26) << r.id << std::right << name << " " << measure_text(v)
+                      << "   your " << std::setprecision(3) << r.student_ms << " ms, reference " << r.reference_ms
                       << " ms\n";
         }
     }

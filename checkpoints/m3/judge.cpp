@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -321,7 +323,14 @@ void judge_group(Group g, Ctx& c) {
                 for (const auto& row : a) {
                     for (double x : row) finite &= std::isfinite(x);
                 }
-                const std::string what = std::string("look_at case '") + key + "': got " + str(a) + ", expected " + str(b);
+                static const std::map<std::string, std::string> inputs = {
+                    {"plain", "look_at((1, 2, 3), (0, 0, 0), (0, 1, 0))"},
+                    {"general", "look_at((-2, 1, 4), (1, 0.5, -1), (0.2, 1, 0.1))"},
+                    {"down", "look_at((0, 5, 0), (0, 0, 0), (0, 1, 0)), up parallel to the view"},
+                    {"same", "look_at((1, 1, 1), (1, 1, 1), (0, 1, 0)), eye == target"},
+                    {"noup", "look_at((3, 0, 0), (0, 0, 0), (0, 0, 0)), a zero up vector"},
+                };
+                const std::string what = inputs.at(key) + ": got " + str(a) + ", expected " + str(b);
                 if (flipped_r) {
                     c.add("handedness", "TODO 4: " + what + ". Your right vector points left: r = cross(f, up), not "
                                                              "cross(up, f), so that r, u, -f is right-handed");
@@ -342,13 +351,26 @@ void judge_group(Group g, Ctx& c) {
                 if (close(p[1][1], 1 / std::tan(45.0))) {
                     c.add("degrees", "TODO 5: perspective(90, ...) has f = " + num(p[1][1]) +
                                          ", which is 1 / tan(45 radians). fovy is in DEGREES: convert with * pi / 180");
+                } else if (close(mat(v, "persp60")[1][1], 1 / std::tan(std::numbers::pi / 3))) {
+                    // f = 1 / tan(fovy) instead of 1 / tan(fovy / 2): 90 degrees gives f = 0.
+                    c.add("projection", "TODO 5: perspective(60, 1.5, 0.5, 50) has f = " + num(mat(v, "persp60")[1][1]) +
+                                            " = 1 / tan(60 degrees), expected 1 / tan(30 degrees) = " +
+                                            num(1 / std::tan(std::numbers::pi / 6)) + ": fovy is the whole vertical angle, "
+                                            "from the bottom of the view to the top, so f = 1 / tan(fovy / 2)");
+                    c.j.findings.back().hint = "halve fovy: the half angle, from the view's axis to its top edge, sets f";
                 } else {
                     c.add("projection", "TODO 5: perspective(90, 2, 1, 10) = " + str(p) + ", expected " + str(pr));
                 }
             }
-            for (const char* key : {"persp60", "fov1", "fov179", "ortho"}) c.matrix(key, "projection", std::string("TODO 5: ") + key);
-            for (const char* key : {"bad_fov", "bad_near", "bad_ortho"}) {
-                c.matrix(key, "projection", std::string("TODO 5: invalid arguments (") + key + ") must give the zero matrix");
+            const std::pair<const char*, const char*> calls[] = {
+                {"persp60", "perspective(60, 1.5, 0.5, 50)"}, {"fov1", "perspective(1, 1, 0.1, 10)"},
+                {"fov179", "perspective(179, 1, 0.1, 10)"}, {"ortho", "orthographic(-2, 2, -1, 1, 1, 11)"}};
+            for (const auto& [key, call] : calls) c.matrix(key, "projection", std::string("TODO 5: ") + call);
+            const std::pair<const char*, const char*> bad[] = {{"bad_fov", "perspective(180, 1, 1, 10)"},
+                                                               {"bad_near", "perspective(60, 1, 0, 10)"},
+                                                               {"bad_ortho", "orthographic(1, 1, -1, 1, 1, 10)"}};
+            for (const auto& [key, call] : bad) {
+                c.matrix(key, "projection", std::string("TODO 5: ") + call + " has invalid arguments and must give the zero matrix");
             }
             c.point("s0", "viewport", "TODO 6: to_screen((0, 0, 0, 1)) in 100 x 50 pixels is the center");
             const Vec3 s1 = vec3(v, "s1");
@@ -402,10 +424,16 @@ void judge_group(Group g, Ctx& c) {
         }
         case Group::kCulling:
             if (get(v, "cull.cw") != 1 || get(v, "cull.ccw") != 0 || get(v, "cull.flat") != 1) {
-                c.add("culling", "TODO 8: is_back_facing gave " + num(get(v, "cull.cw")) + " for (10,10) (20,10) (10,20) "
-                                 "(signed area > 0 in pixels: back), " + num(get(v, "cull.ccw")) + " for the reverse (front), " +
-                                 num(get(v, "cull.flat")) + " for a zero-area triangle (culled). A front face has a NEGATIVE "
-                                 "cross(s1 - s0, s2 - s0) when y grows downward");
+                // Only the cases that are wrong, each with its inputs, its answer and the expected one.
+                std::string wrong;
+                auto check = [&](const char* key, const std::string& call, double want, const std::string& why) {
+                    if (get(v, key) == want) return;
+                    wrong += (wrong.empty() ? "" : "; ") + call + " gave " + num(get(v, key)) + ", expected " + num(want) + " (" + why + ")";
+                };
+                check("cull.cw", "is_back_facing((10, 10), (20, 10), (10, 20))", 1, "signed area > 0 in pixels: a back face");
+                check("cull.ccw", "is_back_facing((10, 10), (10, 20), (20, 10))", 0, "the reverse order: a front face");
+                check("cull.flat", "is_back_facing((10, 10), (20, 20), (30, 30))", 1, "zero area: culled too");
+                c.add("culling", "TODO 8: " + wrong + ". A front face has a NEGATIVE cross(s1 - s0, s2 - s0) when y grows downward");
             }
             break;
         case Group::kBezier:
@@ -521,20 +549,32 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
         const auto a = polygon(c.mine, k), b = polygon(c.ref, k);
         if (!same_polygon(a, b)) {
             clipper_ok = false;
+            const std::string count = a.size() == b.size()
+                                          ? std::to_string(a.size()) + " vertices, as many as the reference's, but not the same points"
+                                          : std::to_string(a.size()) + " vertices, expected " + std::to_string(b.size());
+            std::string pts;
+            for (const Vec4& p : a) pts += (pts.empty() ? "" : " ") + str(p);
+            std::string rpts;
+            for (const Vec4& p : b) rpts += (rpts.empty() ? "" : " ") + str(p);
             c.add(beyond_near(a) ? "near plane" : "clipping",
-                  "TODO 7a: clip_polygon on this scene's triangle gave " + std::to_string(a.size()) + " vertices, expected " +
-                      std::to_string(b.size()) + (beyond_near(a) ? ", some outside the near plane (z < -w)" : ""));
+                  "TODO 7a: clip_polygon on this scene's triangle gave " + count + " (yours: " + pts + "; expected: " + rpts +
+                      ")" + (beyond_near(a) ? ", some outside the near plane (z < -w)" : ""));
         }
     }
-    // Right matrices and a right clipper, but a picture that differs: the pipeline's order.
+    // Every function draw_model calls is right (judge() checked them first), the scene's matrices
+    // and clipped triangles too, but the picture differs: the fault is draw_model's own.
     if (camera_ok && clipper_ok && clipped_any) {
         const raster::Image& expected = c.expected;
         const auto it = art.images.find("main");
         if (!expected.empty() && it != art.images.end() &&
             strict_diffs(it->second, expected, tolerance_for(expected)) > 0) {
-            c.add("clip space", "TODO 11: your matrices and clip_polygon are right, yet the picture differs where no "
-                                "edge is near: does draw_model clip in clip space, BEFORE the perspective divide? A "
-                                "vertex with w <= 0 divided by w lands on the wrong side of the screen");
+            c.add("clip space", "TODO 11: every function draw_model calls passes its own checks here (matrices, "
+                                "look_at, projection, to_screen, clip_polygon" +
+                                    std::string(c.s.cull ? ", is_back_facing" : "") + (c.s.painter ? ", painter_order" : "") +
+                                    ")"
+                                    ", yet the picture differs where no edge is near, so "
+                                    "draw_model uses them wrongly. Does it clip in clip space, BEFORE the perspective "
+                                    "divide (a vertex with w <= 0 divided by w lands on the wrong side of the screen)?");
         }
     }
 }
@@ -559,6 +599,64 @@ void judge_probes(Ctx& c) {
     }
 }
 
+// Whether the harness will find the picture wrong under this tolerance (as count_under_policy
+// in harness/judge_step.cpp does).
+bool image_fails(const raster::Image& a, const raster::Image& e, const cp::Tolerance& t) {
+    if (a.width() != e.width() || a.height() != e.height()) return true;
+    long long lenient = 0;
+    for (int y = 0; y < e.height(); ++y) {
+        for (int x = 0; x < e.width(); ++x) {
+            const Color p = a.at(x, y), q = e.at(x, y);
+            const int d = std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
+            if (d > 0 && t.lenient.get(x, y)) {
+                ++lenient;
+            } else if (d > t.strict_channel_diff) {
+                return true;
+            }
+        }
+    }
+    return lenient > t.max_lenient_diffs;
+}
+
+// "fix TODO N first (see <checkpoint>)": one finding per prerequisite group of the scene that
+// fails its own checks, in the order of the TODOs; a group whose checks go through one that
+// failed is not judged (its failure would only repeat that one).
+std::vector<cp::Finding> prerequisite_findings(const Scene& s, const cp::Artifacts& artifacts,
+                                               const cp::Artifacts& reference, const raster::Image& expected) {
+    std::vector<cp::Finding> first;
+    std::set<Group> broken;
+    for (Group g : prerequisite_groups(s)) {
+        const std::vector<Group> deps = group_dependencies(g);
+        if (std::any_of(deps.begin(), deps.end(), [&](Group d) { return broken.count(d) > 0; })) {
+            broken.insert(g);
+            continue;
+        }
+        const std::string prefix = prerequisite_key(g);
+        auto strip = [&prefix](const Values& all) {
+            Values out;
+            for (auto it = all.lower_bound(prefix); it != all.end() && it->first.rfind(prefix, 0) == 0; ++it) {
+                out[it->first.substr(prefix.size())] = it->second;
+            }
+            return out;
+        };
+        const Values mine = strip(artifacts.values), ref = strip(reference.values);
+        cp::Judgement scratch;
+        Ctx sub{s, mine, ref, scratch, expected};
+        judge_group(g, sub);
+        if (scratch.findings.empty()) continue;
+        broken.insert(g);
+        cp::Finding f = scratch.findings.front();
+        const std::string id = prerequisite_checkpoint(g);
+        const std::string todo = f.todo.empty() ? "that TODO" : f.todo;
+        const std::string what = s.panels.empty() ? "these numbers are computed with it" : "this picture is drawn with it";
+        f.message = "fix " + todo + " first (see " + id + ", which tests it alone; " + what + "): " + f.message;
+        f.hint = "fix " + todo + " first: " + id + " checks it on its own, and this checkpoint cannot pass before "
+                 "that one does";
+        first.push_back(f);
+    }
+    return first;
+}
+
 }  // namespace
 
 cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const cp::Artifacts& reference,
@@ -571,9 +669,30 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
         c.add("pipeline", std::to_string(artifacts.stray_writes) + " write(s) outside the image: milestones 1 and 2 "
                           "clip to the image, so this comes from your own code");
     }
+    const std::size_t before = j.findings.size();
     for (Group g : s.groups) judge_group(g, c);
     judge_probes(c);
-    if (!s.panels.empty()) judge_picture(c, artifacts);
+    // A picture scene whose own numbers fail (m3.solid_cube's is_back_facing) is judged on
+    // them alone: its counts and its clip-space guess would blame draw_model for them.
+    const bool own_failed = j.findings.size() > before;
+    if (!s.panels.empty() && !own_failed) judge_picture(c, artifacts);
+    bool fails = j.findings.size() > before;
+    if (!fails && !s.panels.empty() && !expected.empty()) {
+        const auto it = artifacts.images.find("main");
+        fails = it == artifacts.images.end() || image_fails(it->second, expected, j.tolerance);
+    }
+    // A failing checkpoint first checks the functions of earlier TODOs it is computed or drawn
+    // with, on their own checkpoints' inputs. One that is wrong is the finding ("fix TODO 1
+    // first, see m3.matrix_ops"), and this scene's own findings, which would blame a later
+    // TODO for what the broken function did, are left out (and so is the harness's "drew
+    // nothing"). A checkpoint that passes stays passed, whatever its prerequisites do.
+    const std::vector<cp::Finding> first = fails ? prerequisite_findings(s, artifacts, reference, expected)
+                                                 : std::vector<cp::Finding>{};
+    if (!first.empty()) {
+        j.findings.resize(before);
+        j.findings.insert(j.findings.end(), first.begin(), first.end());
+    }
+    j.upstream_failed = !first.empty() || (!s.panels.empty() && own_failed);
     return j;
 }
 

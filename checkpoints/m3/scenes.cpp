@@ -534,6 +534,52 @@ std::vector<std::array<Vec4, 2>> clip_line_cases() {
     return cases;
 }
 
+std::vector<Group> group_dependencies(Group g) {
+    // Number groups that reach their results through transform_point or a product (TODO 1),
+    // or through the builders: a wrong product must not read as a wrong rotation.
+    switch (g) {
+        case Group::kBuilders:
+        case Group::kProjection: return {Group::kMatrixOps};
+        case Group::kComposition: return {Group::kMatrixOps, Group::kBuilders};
+        case Group::kRotationDrift: return {Group::kMatrixOps, Group::kRodrigues};
+        default: return {};
+    }
+}
+
+std::vector<Group> prerequisite_groups(const Scene& s) {
+    if (s.panels.empty()) {
+        std::vector<Group> out;
+        for (Group g : s.groups) {
+            for (Group d : group_dependencies(g)) {
+                if (std::find(s.groups.begin(), s.groups.end(), d) == s.groups.end() &&
+                    std::find(out.begin(), out.end(), d) == out.end()) {
+                    out.push_back(d);
+                }
+            }
+        }
+        std::sort(out.begin(), out.end());
+        return out;
+    }
+    std::vector<Group> all = {Group::kMatrixOps, Group::kBuilders, Group::kRodrigues, Group::kLookAt, Group::kProjection};
+    if (s.clip) all.push_back(Group::kClip);
+    if (s.cull) all.push_back(Group::kCulling);
+    if (s.painter) all.push_back(Group::kPainter);
+    std::vector<Group> out;
+    for (Group g : all) {
+        if (std::find(s.groups.begin(), s.groups.end(), g) == s.groups.end()) out.push_back(g);
+    }
+    return out;
+}
+
+std::string prerequisite_key(Group g) { return "pre" + std::to_string(static_cast<int>(g)) + "."; }
+
+std::string prerequisite_checkpoint(Group g) {
+    for (const Scene& s : public_scenes()) {
+        if (std::find(s.groups.begin(), s.groups.end(), g) != s.groups.end()) return s.id;
+    }
+    return "m3";
+}
+
 const std::vector<Scene>& scenes() { return current_seed == 0 ? public_scenes() : varied; }
 
 std::uint64_t variant_seed() { return current_seed; }

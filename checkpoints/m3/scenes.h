@@ -78,6 +78,17 @@ void use_variant(std::uint64_t seed);
 std::uint64_t variant_seed();
 const Scene& scene(const std::string& id);
 
+// The number groups a picture scene is drawn with, besides its own: the functions draw_model
+// calls, each tested on its own checkpoint's fixed inputs. The render half records them under
+// "pre<group>."; the judge checks them before it guesses at the picture, and a failure says
+// "fix TODO N first (see <prerequisite_checkpoint>)". Empty for a numbers scene.
+std::vector<Group> prerequisite_groups(const Scene& s);  // in the order of the enum (of the TODOs)
+// The groups whose functions group g's own checks go through (kBuilders: kMatrixOps, since it
+// tests rotate_z through transform_point). Always earlier in the enum.
+std::vector<Group> group_dependencies(Group g);
+std::string prerequisite_key(Group g);           // "pre3."
+std::string prerequisite_checkpoint(Group g);    // the public numbers scene that judges g
+
 // Shapes shared with the demo and the tools.
 Mesh cube_mesh(bool colored);
 Mesh pyramid_mesh();

@@ -126,11 +126,21 @@ void judge_group(Group g, Ctx& c) {
                 }
                 const bool big = k.format == 2 || (k.format != 2 && std::abs(mine - want) > 1);
                 if (!big) continue;  // one unit in the last place of a float: rounding
+                // 24-bit fixed point: d * (2^24 - 1) cut down to a whole number is one below the
+                // pinned key whenever the fraction is at least a half.
+                std::string truncated;
+                if (k.format == 2 && !std::isnan(k.z_ndc)) {
+                    const double scaled = std::clamp((k.z_ndc + 1) / 2, 0.0, 1.0) * double((1u << 24) - 1);
+                    if (mine == std::floor(scaled) && mine + 1 == want) {
+                        truncated = ": d * (2^24 - 1) = " + num(scaled) + " was cut down to " + num(mine) +
+                                    "; the key ROUNDS to the nearest whole number (std::llround), so " + num(want);
+                    }
+                }
                 c.add(k.format == 1 || k.format == 3 ? "depth format" : "depth key",
                       "TODO 1: depth_key(" + std::string(kFormatNames[k.format]) + ", z_ndc " + num(k.z_ndc) + ", w " +
                           num(k.w) + ") gave " + num(mine) + ", expected " + num(want) +
                           (other.empty() ? "" : " (that is the key of " + other + ")") +
-                          (std::isnan(k.z_ndc) ? ": NaN must give kClearKey" : ""));
+                          (std::isnan(k.z_ndc) ? ": NaN must give kClearKey" : "") + truncated);
             }
             break;
         }
@@ -240,6 +250,20 @@ void judge_group(Group g, Ctx& c) {
         }
         case Group::kLambert: {
             const auto cases = lambert_cases();
+            // Which cases fail: when the only one is the case with a normal longer than 1, the
+            // mistake is the missing normalization, whatever the numbers look like.
+            std::vector<std::size_t> failing;
+            for (std::size_t i = 0; i < cases.size(); ++i) {
+                const auto& k = cases[i];
+                if (!same3(vec3(v, "shade" + std::to_string(i)), lambert(k.ambient, k.lights, k.base, k.position, k.normal), 1e-9)) {
+                    failing.push_back(i);
+                }
+            }
+            auto non_unit = [&](std::size_t i) {
+                const double len = raster::length(cases[i].normal);
+                return len > 0 && std::abs(len - 1) > 1e-9;
+            };
+            const bool only_long_normal = failing.size() == 1 && non_unit(failing[0]);
             for (std::size_t i = 0; i < cases.size(); ++i) {
                 const auto& k = cases[i];
                 const Vec3 want = lambert(k.ambient, k.lights, k.base, k.position, k.normal);
@@ -248,7 +272,11 @@ void judge_group(Group g, Ctx& c) {
                 const Vec3 ambient_only{k.base.r * k.ambient.x, k.base.g * k.ambient.y, k.base.b * k.ambient.z};
                 std::string topic = "lambert", why;
                 const bool all_zero = same3(mine, Vec3{}, 0);
-                if (all_zero && !same3(want, Vec3{}, 0)) {
+                if (only_long_normal) {
+                    why = ": this is the only case whose normal is not of unit length (its length is " +
+                          num(raster::length(k.normal)) + "), and the only case that fails: normalize N inside "
+                          "shade() before the dot products (depth_lighting.h says the normal need not be unit)";
+                } else if (all_zero && !same3(want, Vec3{}, 0)) {
                     why = ": shade() returned nothing; start from the ambient term";
                 } else if (i == 1 && (mine.x < ambient_only.x - 1e-6)) {
                     topic = "negative light";
@@ -314,30 +342,45 @@ void judge_group(Group g, Ctx& c) {
                 // Counts from hostile artifacts: anything but a small whole number is -1.
                 auto count = [](double x) { return std::isfinite(x) && x >= 0 && x <= 64 ? static_cast<int>(x) : -1; };
                 const int n = count(get(v, key + ".n")), rn = count(get(c.ref, key + ".n"));
+                // The case's inputs, so that the student can redo it by hand.
+                std::string inputs;
+                for (int k = 0; k < 3; ++k) {
+                    const Vec4 p = cases[i].clip[std::size_t(k)];
+                    inputs += std::string(k ? ", " : "") + "(" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) + ", " + num(p.w) + ")";
+                }
+                const std::string what = "clip_triangle case " + std::to_string(i) + " (clip positions " + inputs + ")";
                 if (n != rn) {
-                    c.add("clipping", "TODO 7b: clip_triangle case " + std::to_string(i) + " gave " + std::to_string(n) +
-                                          " vertices, expected " + std::to_string(rn));
+                    c.add("clipping", "TODO 7b: " + what + " gave " + std::to_string(n) + " vertices, expected " + std::to_string(rn));
                     continue;
                 }
                 // The same polygon, possibly starting at another vertex (the plane order is free).
                 bool found_any = false, positions_only = false;
+                std::set<std::string> wrong_attributes;  // where the positions match
                 for (int shift = 0; shift < std::max(1, n) && !found_any; ++shift) {
                     bool all = true, pos = true;
+                    std::set<std::string> wrong;
                     for (int a = 0; a < n; ++a) {
                         const std::string mk = key + "." + std::to_string((a + shift) % n), rk = key + "." + std::to_string(a);
                         for (int f = 0; f < 15; ++f) {
                             const bool ok = close(get(v, mk + kFields[f]), get(c.ref, rk + kFields[f]), 1e-9);
                             all &= ok;
                             if (f < 4) pos &= ok;
+                            if (!ok && f >= 4) wrong.insert(f < 7 ? "color" : f < 10 ? "normal" : f < 13 ? "world position" : "uv");
                         }
                     }
                     found_any = all;
-                    positions_only |= pos && !all;
+                    if (pos && !all) {
+                        positions_only = true;
+                        wrong_attributes = wrong;
+                    }
                 }
                 if (!found_any) {
-                    c.add("clipping", "TODO 7: clip_triangle case " + std::to_string(i) +
-                                          (positions_only ? ": the positions are right but the attributes are not: lerp "
-                                                            "every attribute with the same t as the position"
+                    std::string names;
+                    for (const std::string& w : wrong_attributes) names += (names.empty() ? "" : ", ") + w;
+                    c.add("clipping", "TODO 7: " + what +
+                                          (positions_only ? ": the positions are right but not the " + names +
+                                                                " of the new vertices: lerp every attribute with the "
+                                                                "same t as the position"
                                                           : ": the vertices differ from the reference's"));
                 }
             }
@@ -512,6 +555,56 @@ const char* picture_topic(const std::string& id) {
     return it == topics.end() ? "pipeline" : it->second;
 }
 
+// The caller that a picture's failure points to once the functions it calls pass their own
+// checks: its concept tag and "TODO N" with what to look at. A theme that is already a
+// caller's concept stays.
+std::pair<std::string, std::string> caller_of(const std::string& theme, Shade shading) {
+    auto lighting_caller = [shading]() -> std::pair<std::string, std::string> {
+        if (shading == Shade::kFlat) {
+            return {"flat shading", "TODO 9: draw_mesh lights a flat triangle once, with the face normal of its world "
+                                    "positions, at its centroid"};
+        }
+        if (shading == Shade::kGouraud) {
+            return {"gouraud", "TODO 9: draw_mesh lights every vertex once, at its world position with its world "
+                               "normal, and fill_triangle interpolates the lit colors"};
+        }
+        return {"per-pixel normals", "TODO 8: fill_triangle interpolates the world position and normal, normalizes "
+                                     "the normal, then calls shade() and to_color() for every fragment"};
+    };
+    if (theme == "depth test" || theme == "tie rule" || theme == "depth format") {
+        return {"rasterizer", "TODO 8: fill_triangle keys every fragment with depth_key and lets depth_passes decide, "
+                              "writing color and key only when it passes"};
+    }
+    if (theme == "debug view") {
+        return {"rasterizer", "TODO 8: fill_triangle colors each fragment with depth_gray or normal_color of the "
+                              "interpolated value"};
+    }
+    if (theme == "perspective") {
+        return {"rasterizer", "TODO 8: fill_triangle weighs the attributes with perspective_weights"};
+    }
+    if (theme == "depth clear") return {"pipeline", "TODO 9: every frame starts with clear_frame"};
+    if (theme == "normal matrix") {
+        return {"pipeline", "TODO 9: normal_matrix passes, so its caller is wrong: draw_mesh sends every normal "
+                            "through normal_matrix(model), never through the model matrix itself"};
+    }
+    if (theme == "clipping") {
+        return {"pipeline", "TODO 9: draw_mesh clips in clip space with clip_triangle, fans the polygon it returns and "
+                            "divides only then"};
+    }
+    if (theme == "clamp" || theme == "negative light" || theme == "grazing light" || theme == "zero normal" ||
+        theme == "lambert" || theme == "light direction" || theme == "normals") {
+        return lighting_caller();
+    }
+    if (theme == "flat shading" || theme == "gouraud" || theme == "per-pixel normals") return lighting_caller();
+    if (theme == "interpolation" || theme == "rasterizer") {
+        return {theme, "TODO 8: fill_triangle interpolates and writes every fragment"};
+    }
+    if (theme == "pipeline" && (shading == Shade::kFlat || shading == Shade::kGouraud || shading == Shade::kPerPixel)) {
+        return lighting_caller();  // a lit panel differs: how its lighting is called
+    }
+    return {theme, "TODO 9: draw_mesh transforms, clips, fans and fills every triangle as depth_lighting.h says"};
+}
+
 const char* shade_name(Shade s) {
     switch (s) {
         case Shade::kFlat: return "flat";
@@ -621,8 +714,40 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
     const std::string topic = picture_topic(s.id);
 
     if (sized && !expected.empty() && differs(*mine, expected, tolerance_for(expected))) {
-        c.add(topic, "the picture differs from the expected one beyond the tolerance (see diff.png); this scene is "
-                     "about: " + s.hint);
+        // judge() checked every function of TODOs 1-7 this picture is drawn with, and they
+        // pass: the difference comes from their caller, fill_triangle (TODO 8) or draw_mesh
+        // (TODO 9). The finding names that caller's concept, not the scene's theme.
+        const cp::Tolerance tol = tolerance_for(expected);
+        const Panel* worst = nullptr;
+        long long worst_count = 0;
+        for (const Panel& p : s.panels) {
+            long long n = 0;
+            for (int y = 0; y < p.h; ++y) {
+                for (int x = 0; x < p.w; ++x) {
+                    const Color a = mine->at(p.x0 + x, p.y0 + y), e = expected.at(p.x0 + x, p.y0 + y);
+                    const int d = std::max({std::abs(a.r - e.r), std::abs(a.g - e.g), std::abs(a.b - e.b)});
+                    n += d > tol.strict_channel_diff && !tol.lenient.get(p.x0 + x, p.y0 + y);
+                }
+            }
+            if (n > worst_count || !worst) {
+                worst = &p;
+                worst_count = n;
+            }
+        }
+        const auto [caller_topic, advice] = caller_of(topic, worst ? worst->shading : Shade::kFaceColor);
+        const std::string where = s.panels.size() > 1 && worst ? " (most in panel " + std::to_string(worst - s.panels.data() + 1) + ")" : "";
+        std::vector<std::string> passing;
+        for (Group g : prerequisite_groups(s)) {
+            const std::string id = prerequisite_checkpoint(g);
+            if (std::find(passing.begin(), passing.end(), id) == passing.end()) passing.push_back(id);
+        }
+        std::string list;
+        for (std::size_t i = 0; i < passing.size(); ++i) list += (i ? ", " : "") + passing[i];
+        const auto colon = advice.find(": ");  // "TODO 9: what its caller must do"
+        c.add(caller_topic, advice.substr(0, colon) + ": the picture differs from the expected one beyond the tolerance" +
+                                where + " (see diff.png), though the functions it is drawn with pass their own checks" +
+                                (list.empty() ? std::string() : " (" + list + ")") + ", so look at how they are called: " +
+                                advice.substr(colon + 2) + ". This scene is about: " + s.hint);
     }
     std::map<std::string, std::pair<double, double>> totals;  // per count: yours, the reference's (all panels)
     for (std::size_t p = 0; p < s.panels.size(); ++p) {
@@ -753,7 +878,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 for (int x = 0; x < panel.w; ++x) far_shows += mine->at(panel.x0 + x, panel.y0 + y) == Color{250, 220, 80};
             }
             c.j.measures[std::string("z-fighting pixels, ") + kFormatNames[int(panel.format)]] = double(far_shows);
-            c.j.measures[std::string("ms, ") + kFormatNames[int(panel.format)]] = 1e3 * get(c.mine, key + ".seconds");
+            c.j.measures[std::string("render time of the ") + kFormatNames[int(panel.format)] + " panel, ms"] = 1e3 * get(c.mine, key + ".seconds");
         }
     }
     // The report prints every count that is not zero, summed over the panels.
@@ -792,9 +917,57 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
         c.add("rasterizer", "TODO 8: " + std::to_string(artifacts.stray_writes) +
                                 " write(s) outside the image: clamp the bounding box to the image");
     }
+    const std::size_t before = j.findings.size();
     for (Group g : s.groups) judge_group(g, c);
     judge_probes(c);
-    if (!s.panels.empty()) judge_picture(c, artifacts, reference, expected);
+    const bool own_failed = j.findings.size() > before;
+    // A function the reference draws with that drew nothing (most often draw_mesh, TODO 9, not
+    // written yet): the harness names it, and every finding about the picture (counts that
+    // blame fill_triangle, keys read back, the scene's theme) would follow from it.
+    bool drew_nothing = false;
+    for (const auto& [name, t] : reference.trace) {
+        const auto it = artifacts.trace.find(name);
+        drew_nothing |= t.writes > 0 && it != artifacts.trace.end() && it->second.calls > 0 && it->second.writes == 0;
+    }
+    if (!s.panels.empty() && !own_failed && !drew_nothing) judge_picture(c, artifacts, reference, expected);
+    bool fails = j.findings.size() > before || (!s.panels.empty() && drew_nothing);
+    if (!fails && !s.panels.empty() && !expected.empty()) {
+        const auto it = artifacts.images.find("main");
+        fails = it == artifacts.images.end() || differs(it->second, expected, j.tolerance);
+    }
+    // A failing checkpoint first checks the functions of TODOs 1-7 its panels use, on their own
+    // checkpoints' inputs. One that is wrong is the finding ("fix TODO 4 first, see
+    // m4.normals"), and the picture's findings, which would blame fill_triangle, draw_mesh or
+    // the scene's theme for what it did, are left out (and so is the harness's "drew nothing").
+    // A checkpoint that passes stays passed, whatever its prerequisites do.
+    std::vector<cp::Finding> first;
+    for (Group g : fails ? prerequisite_groups(s) : std::vector<Group>{}) {
+        const std::string prefix = prerequisite_key(g);
+        auto strip = [&prefix](const Values& all) {
+            Values out;
+            for (auto it = all.lower_bound(prefix); it != all.end() && it->first.rfind(prefix, 0) == 0; ++it) {
+                out[it->first.substr(prefix.size())] = it->second;
+            }
+            return out;
+        };
+        const Values mine = strip(artifacts.values), ref = strip(reference.values);
+        cp::Judgement scratch;
+        Ctx sub{s, mine, ref, scratch};
+        judge_group(g, sub);
+        if (scratch.findings.empty()) continue;
+        cp::Finding f = scratch.findings.front();
+        const std::string pid = prerequisite_checkpoint(g);
+        const std::string todo = f.todo.empty() ? "that TODO" : f.todo;
+        f.message = "fix " + todo + " first (see " + pid + ", which tests it alone; this picture is drawn with it): " + f.message;
+        f.hint = "fix " + todo + " first: " + pid + " checks it on its own, and this picture cannot come out right "
+                 "before that checkpoint passes";
+        first.push_back(f);
+    }
+    if (!first.empty()) {
+        j.findings.resize(before);
+        j.findings.insert(j.findings.end(), first.begin(), first.end());
+    }
+    j.upstream_failed = !first.empty() || (!s.panels.empty() && own_failed);
     return j;
 }
 

@@ -626,6 +626,50 @@ std::vector<LambertCase> lambert_cases() {
     return cases;
 }
 
+std::vector<Group> prerequisite_groups(const Scene& s) {
+    std::vector<Group> need;
+    auto add = [&need](Group g) {
+        if (std::find(need.begin(), need.end(), g) == need.end()) need.push_back(g);
+    };
+    for (const Panel& p : s.panels) {
+        const bool pipeline = p.screen_tris.empty();  // draw_mesh after clear_frame
+        if (pipeline) {
+            add(Group::kClearFrame);
+            add(Group::kClip);
+        }
+        if (p.depth_test) {
+            add(Group::kDepthKeys);
+            add(Group::kDepthTest);
+        }
+        const bool interpolates = !pipeline || p.shading == Shade::kVertexColor || p.shading == Shade::kGouraud ||
+                                  p.shading == Shade::kPerPixel || p.shading == Shade::kChecker ||
+                                  p.shading == Shade::kNormalView;
+        if (p.perspective_correct && interpolates) add(Group::kWeights);
+        if (p.shading == Shade::kFlat || p.shading == Shade::kGouraud || p.shading == Shade::kPerPixel) {
+            add(Group::kNormals);
+            add(Group::kLambert);
+        }
+        if (p.shading == Shade::kNormalView) add(Group::kNormals);
+        if (p.shading == Shade::kDepthView || p.shading == Shade::kNormalView) add(Group::kDebugColors);
+        if (p.shading == Shade::kDepthView) add(Group::kDepthKeys);
+    }
+    std::vector<Group> out;
+    for (Group g : need) {
+        if (std::find(s.groups.begin(), s.groups.end(), g) == s.groups.end()) out.push_back(g);
+    }
+    std::sort(out.begin(), out.end());  // in the order of the TODOs
+    return out;
+}
+
+std::string prerequisite_key(Group g) { return "pre" + std::to_string(static_cast<int>(g)) + "."; }
+
+std::string prerequisite_checkpoint(Group g) {
+    for (const Scene& s : public_scenes()) {
+        if (std::find(s.groups.begin(), s.groups.end(), g) != s.groups.end()) return s.id;
+    }
+    return "m4";
+}
+
 const std::vector<Scene>& scenes() { return current_seed == 0 ? public_scenes() : varied; }
 
 std::uint64_t variant_seed() { return current_seed; }

@@ -117,6 +117,14 @@ void use_variant(std::uint64_t seed);
 std::uint64_t variant_seed();
 const Scene& scene(const std::string& id);
 
+// The number groups a picture scene is drawn with, besides its own: the functions of TODOs 1-7
+// its panels call (through fill_triangle and draw_mesh), each on its own checkpoint's fixed
+// inputs. The render half records them under "pre<group>."; the judge checks them before it
+// judges the picture, and a failure says "fix TODO N first (see <prerequisite_checkpoint>)".
+std::vector<Group> prerequisite_groups(const Scene& s);
+std::string prerequisite_key(Group g);         // "pre3."
+std::string prerequisite_checkpoint(Group g);  // the public numbers scene that judges g
+
 // Shapes shared with the demo, the tables and the benchmark.
 // A UV sphere of radius 1: `segments` around, segments / 2 from pole to pole, with its exact
 // normals when `with_normals` (else the pipeline computes them).

@@ -2,6 +2,9 @@
 // your own lines.cpp, triangles.cpp and transforms.cpp (the checkpoints use the reference of
 // milestones 1 to 3 instead), and prints how far each picture is from the reference's.
 //
+// Its source lives with the checkpoints (it compares with their expected images); the
+// student's folder, milestone4_depth_lighting/, holds only what the student writes.
+//
 //   ./demo_m4 [output-folder]     (default: demo_out/m4; open index.html in a browser)
 #include <string>
 #include <vector>

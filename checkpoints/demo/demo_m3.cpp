@@ -3,6 +3,9 @@
 // instead), prints how far each is from the reference picture, and renders an animation: a
 // spinning wireframe cube and soccer ball, the camera flying along a cubic Bezier path.
 //
+// Its source lives with the checkpoints (it compares with their expected images); the
+// student's folder, milestone3_transforms/, holds only what the student writes.
+//
 //   ./demo_m3 [output-folder]     (default: demo_out/m3; open index.html in a browser;
 //                                  the animation is frames/animation.gif, and its frames)
 #include <cmath>

@@ -2,6 +2,9 @@
 // against a viewport) with YOUR lines.cpp, and prints how far each is from the reference
 // picture and how long it took.
 //
+// Its source lives with the checkpoints (it compares with their expected images); the
+// student's folder, milestone1_lines/, holds only what the student writes.
+//
 //   ./demo_m1 [output-folder]     (default: demo_out/m1; open index.html in a browser)
 #include "harness/showcase.h"
 #include "m1/render.h"

@@ -2,6 +2,9 @@
 // watertight fan, the cube without and with anti-aliasing) with YOUR triangles.cpp, and
 // prints how far each is from the reference picture and how long it took.
 //
+// Its source lives with the checkpoints (it compares with their expected images); the
+// student's folder, milestone2_triangles/, holds only what the student writes.
+//
 //   ./demo_m2 [output-folder]     (default: demo_out/m2; open index.html in a browser)
 #include "harness/showcase.h"
 #include "m2/render.h"
