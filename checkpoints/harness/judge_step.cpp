@@ -311,9 +311,11 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
                                   "). Bright red pixels in diff.png show them all."});
             }
             if (pc.lenient_diffs > tol.max_lenient_diffs) {
+                const std::string by = tol.strict_channel_diff > 0
+                                           ? " by more than " + std::to_string(tol.strict_channel_diff) + " level(s)"
+                                           : "";
                 findings.push_back({"image", std::to_string(pc.lenient_diffs) +
-                                                 " pixels near edges differ from the expected image by more than " +
-                                                 std::to_string(tol.strict_channel_diff) + " level(s); up to " +
+                                                 " pixels near edges differ from the expected image" + by + "; up to " +
                                                  std::to_string(tol.max_lenient_diffs) + " may, because " + tol.why +
                                                  ". Over that limit none is tolerated: all are red in diff.png."});
             }
