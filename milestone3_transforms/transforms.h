@@ -106,9 +106,11 @@ Mat4 rotate(Vec3 axis, double radians);
 // cofactors). Returns false, leaving `out` alone, when `a` is singular. Tested rule: a matrix
 // whose singularity is exact (a zero column, two equal rows) must give false; a matrix with a
 // condition number up to 1e12 (the checkpoint's is R1 * D * R2, with rotations R1, R2 and the
-// diagonal D = (1e6, 1, 1, 1e-6)) must give true with |a * out - I| <= 1e-3 in every entry.
-// Between the two the choice is yours (the reference reports a pivot <= 1e-14 times the
-// largest |entry|). A matrix with an entry that is NaN or infinite returns false too.
+// diagonal D = (1, 1e-6, 1e-6, 1e-12): entries at most 1, a last pivot near 1e-12) must give
+// true with |a * out - I| <= 1e-3 in every entry. Between the two the choice is yours, as long
+// as it scales with the entries (the reference reports a pivot <= 1e-14 times the largest
+// |entry|; a fixed threshold such as 1e-6 fails). A matrix with an entry that is NaN or
+// infinite returns false too.
 bool inverse(const Mat4& a, Mat4& out);
 // TODO 3b: the inverse of a rigid transform (a rotation R and a translation t, last row
 // 0 0 0 1): R transposed, and -R^T t. No elimination, no test for singularity.

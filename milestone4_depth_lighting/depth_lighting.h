@@ -216,10 +216,13 @@ struct ClipVertex {
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t);
 // Milestone 3's clip_polygon for a triangle whose vertices carry attributes: the part inside
 // the six planes -w <= x, y, z <= w, as a polygon in the same orientation (fan it from vertex
-// 0). A new vertex where the edge a-b leaves a plane (da >= 0 > db) is lerp(a, b, da / (da -
-// db)), or lerp(b, a, db / (db - da)) when a is the outside end (interpolating from the inside
-// end gives two triangles sharing an edge the very same new vertex). Empty when nothing is
-// inside. Any order of the planes.
+// 0). A vertex on a plane (d = 0) is inside it. A new vertex where the edge a-b leaves a plane
+// (da >= 0 > db) is lerp(a, b, da / (da - db)), or lerp(b, a, db / (db - da)) when a is the
+// outside end (interpolating from the inside end gives two triangles sharing an edge the very
+// same new vertex). Then every vertex whose w
+// is not > 0 is dropped: exactly, a vertex inside has w >= near > 0, but rounding between two
+// huge vertices can cancel every digit and leave (0, 0, 0, 0), which lies on all six planes.
+// Empty when fewer than 3 vertices remain. Any order of the planes; any start vertex.
 std::vector<ClipVertex> clip_triangle(const std::array<ClipVertex, 3>& triangle);
 
 // ---- TODO 8: the triangle with depth and attributes ----

@@ -35,6 +35,7 @@ struct PolicyCount {
     long long small_diffs = 0;  // outside the lenient mask, within strict_channel_diff levels
     int first_x = -1, first_y = -1;  // first strict difference, for the message
     raster::Image diff;  // expected dimmed; errors bright red, tolerated differences blue
+    bool over_limit = false;  // more lenient differences than allowed: painted red, not blue
 };
 
 inline constexpr raster::Color kErrorMark{255, 40, 40};
@@ -44,6 +45,7 @@ PolicyCount count_under_policy(const raster::Image& actual, const raster::Image&
                                const Tolerance& tol) {
     PolicyCount pc;
     pc.diff = raster::Image(expected.width(), expected.height());
+    std::vector<std::size_t> lenient_at;  // where the band's differences are, to repaint them
     for (int y = 0; y < expected.height(); ++y) {
         for (int x = 0; x < expected.width(); ++x) {
             const raster::Color a = actual.at(x, y);
@@ -51,9 +53,13 @@ PolicyCount count_under_policy(const raster::Image& actual, const raster::Image&
             const int d = std::max({std::abs(a.r - e.r), std::abs(a.g - e.g), std::abs(a.b - e.b)});
             raster::Color mark{static_cast<std::uint8_t>(e.r / 4), static_cast<std::uint8_t>(e.g / 4),
                                static_cast<std::uint8_t>(e.b / 4)};
-            if (d > 0 && tol.lenient.get(x, y)) {
+            // One rule for every pixel: a difference of at most strict_channel_diff levels is
+            // rounding wherever it is; a larger one is allowed only in the lenient band, and
+            // only up to max_lenient_diffs of them.
+            if (d > tol.strict_channel_diff && tol.lenient.get(x, y)) {
                 ++pc.lenient_diffs;
                 mark = kToleratedMark;
+                lenient_at.push_back(std::size_t(y) * expected.width() + x);
             } else if (d > tol.strict_channel_diff) {
                 if (pc.strict_diffs++ == 0) {
                     pc.first_x = x;
@@ -65,6 +71,13 @@ PolicyCount count_under_policy(const raster::Image& actual, const raster::Image&
                 mark = kToleratedMark;
             }
             pc.diff.set(x, y, mark);
+        }
+    }
+    // Over the limit, the band's differences are errors too: red, not "allowed".
+    pc.over_limit = pc.lenient_diffs > tol.max_lenient_diffs;
+    if (pc.over_limit) {
+        for (const std::size_t at : lenient_at) {
+            pc.diff.set(int(at % expected.width()), int(at / expected.width()), kErrorMark);
         }
     }
     return pc;
@@ -273,7 +286,9 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
             PolicyCount pc = count_under_policy(actual, expected, judgement.tolerance);
             policy_diff = std::move(pc.diff);
             const Tolerance& tol = judgement.tolerance;
-            rec.tolerated = pc.lenient_diffs + pc.small_diffs;
+            // Differences in the band count as tolerated only while they stay within the limit.
+            const long long band = pc.over_limit ? 0 : pc.lenient_diffs;
+            rec.tolerated = band + pc.small_diffs;
             if (rec.tolerated > 0) {
                 std::ostringstream t;
                 t << rec.tolerated << " pixel(s) differ where the rule allows it (blue in diff.png): ";
@@ -281,7 +296,7 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
                     t << pc.small_diffs << " by at most " << tol.strict_channel_diff
                       << " level(s) (rounding and FMA differences)";
                 }
-                if (pc.lenient_diffs > 0) {
+                if (band > 0) {
                     t << (pc.small_diffs > 0 ? "; " : "") << pc.lenient_diffs << " of at most "
                       << tol.max_lenient_diffs << " in the ambiguous band"
                       << (tol.why.empty() ? std::string() : ", because " + tol.why);
@@ -298,9 +313,13 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
                                   "). Bright red pixels in diff.png show them all."});
             }
             if (pc.lenient_diffs > tol.max_lenient_diffs) {
+                const std::string by = tol.strict_channel_diff > 0
+                                           ? " by more than " + std::to_string(tol.strict_channel_diff) + " level(s)"
+                                           : "";
                 findings.push_back({"image", std::to_string(pc.lenient_diffs) +
-                                                 " pixels near edges differ from the expected image; up to " +
-                                                 std::to_string(tol.max_lenient_diffs) + " may, because " + tol.why});
+                                                 " pixels near edges differ from the expected image" + by + "; up to " +
+                                                 std::to_string(tol.max_lenient_diffs) + " may, because " + tol.why +
+                                                 ". Over that limit none is tolerated: all are red in diff.png."});
             }
         }
     } else if (main_it == student.images.end() && !student.stopped) {

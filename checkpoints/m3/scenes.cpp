@@ -367,8 +367,10 @@ Mesh obj_mesh(const std::string& name, bool colored) {
 Mesh soccer_ball_mesh() { return obj_mesh("soccer_ball", true); }
 
 static Matrix public_near_singular_matrix(const double (&angles)[6]) {
-    // Q1 * diag(1e6, 1, 1, 1e-6) * Q2 with 4D rotations Q1, Q2 (Givens rotations in several
-    // planes), so every entry is mixed and the condition number is 1e12.
+    // Q1 * diag(1, 1e-6, 1e-6, 1e-12) * Q2 with 4D rotations Q1, Q2 (Givens rotations in several
+    // planes), so every entry is mixed and the condition number is 1e12. Its entries are at most
+    // 1, so the last pivot is far below a fixed threshold of 1e-6: only a threshold relative to
+    // the entries inverts it (a uniform scale changes neither the condition nor the residual).
     auto givens = [](int i, int j, double a) {
         Matrix g{};
         for (int k = 0; k < 4; ++k) g[k][k] = 1;
@@ -387,9 +389,9 @@ static Matrix public_near_singular_matrix(const double (&angles)[6]) {
         return r;
     };
     Matrix d{};
-    d[0][0] = 1e6;
-    d[1][1] = d[2][2] = 1;
-    d[3][3] = 1e-6;
+    d[0][0] = 1;
+    d[1][1] = d[2][2] = 1e-6;
+    d[3][3] = 1e-12;
     const Matrix q1 = mul(mul(givens(0, 3, angles[0]), givens(1, 2, angles[1])), givens(0, 1, angles[2]));
     const Matrix q2 = mul(mul(givens(2, 3, angles[3]), givens(0, 2, angles[4])), givens(1, 3, angles[5]));
     return mul(mul(q1, d), q2);

@@ -252,7 +252,12 @@ std::vector<Scene> build() {
         box.position = {0.2, 0.1, 0.1};
         box.size = {0.7, 0.7, 0.7};
         pn.items.push_back(box);
-        pn.depth_probes = {{48, 50}, {20, 80}, {75, 85}, {50, 30}, {30, 62}, {70, 60}};
+        // Probes only where the key is pinned: on the sphere, which lies inside the view volume.
+        // The floor is clipped, and a clipped polygon's fan (hence each fan triangle's plane
+        // through vertices snapped to 1/16 pixel) depends on the start vertex and the plane order
+        // the header leaves free: its keys move by thousands of float steps between correct
+        // clippers (the picture's 3 gray levels absorb that).
+        pn.depth_probes = {{48, 50}, {50, 30}, {53, 41}, {45, 40}, {61, 38}, {57, 48}};
         s.panels.push_back(pn);
         add(s);
     }

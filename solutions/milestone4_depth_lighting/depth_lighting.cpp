@@ -273,6 +273,10 @@ std::vector<ClipVertex> clip_triangle(const std::array<ClipVertex, 3>& triangle)
         }
         out.swap(next);
     }
+    // Exactly, every vertex inside has w >= near > 0; rounding between two huge vertices can
+    // cancel every digit and leave (0, 0, 0, 0), which lies on all six planes. It has no place
+    // on the screen: drop it.
+    std::erase_if(out, [](const ClipVertex& c) { return !(c.clip.w > 0); });
     if (out.size() < 3) out.clear();
     // END SOLUTION
     return out;
