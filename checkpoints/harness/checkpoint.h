@@ -85,6 +85,10 @@ struct Tolerance {
     std::string why;
 };
 
+// Whether `actual` fails `expected` under the tolerance: the judge step's own rule, for the
+// milestone judges that must know before the verdict whether a picture would fail.
+bool exceeds_tolerance(const raster::Image& actual, const raster::Image& expected, const Tolerance& tol);
+
 // One thing the judge found wrong, in a student's words. `topic` is a short tag naming the
 // idea the student should revisit ("endpoint", "octant", "clipping", ...): the summary table
 // shows it, and the project's own tests check that each deliberate bug names its concept.

@@ -185,6 +185,12 @@ std::vector<Finding> nothing_drawn_findings(const Suite& suite, const Artifacts&
 
 }  // namespace
 
+bool exceeds_tolerance(const raster::Image& actual, const raster::Image& expected, const Tolerance& tol) {
+    if (actual.width() != expected.width() || actual.height() != expected.height()) return true;
+    const PolicyCount pc = count_under_policy(actual, expected, tol);
+    return pc.strict_diffs > 0 || pc.over_limit;
+}
+
 std::uint64_t scene_seed_from_env() {
     const std::string s = env_or("RASTER_SCENE_SEED", "0");
     char* end = nullptr;

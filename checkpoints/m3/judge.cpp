@@ -599,25 +599,6 @@ void judge_probes(Ctx& c) {
     }
 }
 
-// Whether the harness will find the picture wrong under this tolerance (as count_under_policy
-// in harness/judge_step.cpp does).
-bool image_fails(const raster::Image& a, const raster::Image& e, const cp::Tolerance& t) {
-    if (a.width() != e.width() || a.height() != e.height()) return true;
-    long long lenient = 0;
-    for (int y = 0; y < e.height(); ++y) {
-        for (int x = 0; x < e.width(); ++x) {
-            const Color p = a.at(x, y), q = e.at(x, y);
-            const int d = std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
-            if (d > 0 && t.lenient.get(x, y)) {
-                ++lenient;
-            } else if (d > t.strict_channel_diff) {
-                return true;
-            }
-        }
-    }
-    return lenient > t.max_lenient_diffs;
-}
-
 // "fix TODO N first (see <checkpoint>)": one finding per prerequisite group of the scene that
 // fails its own checks, in the order of the TODOs; a group whose checks go through one that
 // failed is not judged (its failure would only repeat that one).
@@ -679,7 +660,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
     bool fails = j.findings.size() > before;
     if (!fails && !s.panels.empty() && !expected.empty()) {
         const auto it = artifacts.images.find("main");
-        fails = it == artifacts.images.end() || image_fails(it->second, expected, j.tolerance);
+        fails = it == artifacts.images.end() || cp::exceeds_tolerance(it->second, expected, j.tolerance);
     }
     // A failing checkpoint first checks the functions of earlier TODOs it is computed or drawn
     // with, on their own checkpoints' inputs. One that is wrong is the finding ("fix TODO 1

@@ -438,21 +438,6 @@ cp::Tolerance tolerance_for(const raster::Image& expected) {
     return t;
 }
 
-bool differs(const raster::Image& a, const raster::Image& e, const cp::Tolerance& t) {
-    if (a.width() != e.width() || a.height() != e.height()) return true;
-    long long lenient = 0;
-    for (int y = 0; y < e.height(); ++y) {
-        for (int x = 0; x < e.width(); ++x) {
-            const Color p = a.at(x, y), q = e.at(x, y);
-            const int d = std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
-            if (d <= t.strict_channel_diff) continue;  // rounding, wherever it is (as judge_step.cpp)
-            if (!t.lenient.get(x, y)) return true;
-            ++lenient;
-        }
-    }
-    return lenient > t.max_lenient_diffs;
-}
-
 // The view basis of a camera, as look_at pins it (f forward, r right, u up).
 struct Basis {
     Vec3 r, u, f;
@@ -711,7 +696,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
     const bool sized = mine && mine->width() == s.width && mine->height() == s.height;
     const std::string topic = picture_topic(s.id);
 
-    if (sized && !expected.empty() && differs(*mine, expected, tolerance_for(expected))) {
+    if (sized && !expected.empty() && cp::exceeds_tolerance(*mine, expected, tolerance_for(expected))) {
         // judge() checked every function of TODOs 1-7 this picture is drawn with, and they
         // pass: the difference comes from their caller, fill_triangle (TODO 8) or draw_mesh
         // (TODO 9). The finding names that caller's concept, not the scene's theme.
@@ -931,7 +916,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
     bool fails = j.findings.size() > before || (!s.panels.empty() && drew_nothing);
     if (!fails && !s.panels.empty() && !expected.empty()) {
         const auto it = artifacts.images.find("main");
-        fails = it == artifacts.images.end() || differs(it->second, expected, j.tolerance);
+        fails = it == artifacts.images.end() || cp::exceeds_tolerance(it->second, expected, j.tolerance);
     }
     // A failing checkpoint first checks the functions of TODOs 1-7 its panels use, on their own
     // checkpoints' inputs. One that is wrong is the finding ("fix TODO 4 first, see
