@@ -35,6 +35,7 @@
 #include "m2/scenes.h"
 #include "m3/render.h"
 #include "m3/scenes.h"
+#include "m1/tables.h"
 #include "m3/tables.h"
 #include "m4/render.h"
 #include "m4/tables.h"
@@ -264,6 +265,7 @@ int main(int argc, char** argv) {
         if (args.size() == 2 && args[0] == "gallery") return gallery(args[1]);
         const bool table_args = args.size() == 1 || (args.size() == 3 && (args[1] == "--update" || args[1] == "--check"));
         if (!args.empty() && args[0] == "aa-table" && table_args) return marked_table("aa-table", aa_table_text(), args);
+        if (!args.empty() && args[0] == "m1-table" && table_args) return marked_table("m1-table", m1cp::error_time_table(), args);
         if (!args.empty() && args[0] == "m3-table" && table_args) return marked_table("m3-table", m3cp::error_time_tables(), args);
         if (!args.empty() && args[0] == "m4-table" && table_args) {
             const int rc = marked_table("m4-table", m4cp::error_time_tables(), args);
@@ -293,7 +295,7 @@ int main(int argc, char** argv) {
         std::cerr << "reference_tool: " << e.what() << "\n";
         return 1;
     }
-    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table|m3-table|m4-table [--update|--check FILE]\n"
+    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table|m1-table|m3-table|m4-table [--update|--check FILE]\n"
                  "       reference_tool todo-table m1|m2|m3|m4 [--update|--check FILE]\n";
     return 2;
 }

@@ -73,19 +73,6 @@ Image& Image::operator=(Image&& other) noexcept {
     return *this;
 }
 
-void Image::blend(int x, int y, Color c, double coverage) {
-    if (!in_bounds(x, y)) {
-        count_stray_write();
-        return;
-    }
-    count_write();
-    std::uint8_t* p = &bytes_[offset(x, y)];
-    const Color mixed = mix({p[0], p[1], p[2]}, c, coverage);
-    p[0] = mixed.r;
-    p[1] = mixed.g;
-    p[2] = mixed.b;
-}
-
 namespace {
 std::atomic<long long> g_total_stray_writes{0};
 }  // namespace

@@ -193,10 +193,13 @@ void draw_line_aa(Image& img, Vec2 a, Vec2 b, Color c) {
     for (int x = static_cast<int>(first); x <= static_cast<int>(last); ++x) {
         const double t = n.y + gradient * (x + 0.5 - n.x) - 0.5;
         if (!(t > -1.0 && t < rows)) continue;  // both candidate rows are off the image
-        const double row = std::floor(t);
+        // floor(t) without a library call: t is in (-1, rows), so the int conversion (which
+        // truncates toward zero) is safe and only needs correcting below zero.
+        int row = static_cast<int>(t);
+        if (row > t) --row;
         const double f = t - row;
-        plot(x, static_cast<int>(row), 1.0 - f);
-        plot(x, static_cast<int>(row) + 1, f);
+        plot(x, row, 1.0 - f);
+        plot(x, row + 1, f);
     }
     // END SOLUTION
 }

@@ -76,6 +76,9 @@ struct Setup {
     Fixed v[3];
     std::int64_t area2 = 0;     // twice the area, in (1/16 pixel)^2; > 0
     bool top_left[3] = {};      // edge i runs from v[i] to v[(i + 1) % 3]
+    // BEGIN SOLUTION
+    std::int64_t bias[3] = {};  // 0 on a top or left edge, -1 on the others (see inside())
+    // END SOLUTION
     bool swapped = false;       // v[1] and v[2] were exchanged to make the area positive
 };
 
@@ -94,12 +97,51 @@ struct Setup {
     for (int i = 0; i < 3; ++i) {
         const Fixed a = t.v[i], b = t.v[(i + 1) % 3];
         t.top_left[i] = (b.y == a.y && b.x > a.x) || b.y < a.y;
+        t.bias[i] = t.top_left[i] ? 0 : -1;
     }
     return true;
     // SKELETON: return false;
     // END SOLUTION
 }
 
+// BEGIN SOLUTION
+// The three edge values at one sample (e0 for the edge from v[0] to v[1], and so on), and
+// adding a step to all three.
+struct Edges {
+    std::int64_t e0 = 0, e1 = 0, e2 = 0;
+    Edges& operator+=(const Edges& d) {
+        e0 += d.e0;
+        e1 += d.e1;
+        e2 += d.e2;
+        return *this;
+    }
+    Edges times(std::int64_t k) const { return {e0 * k, e1 * k, e2 * k}; }
+};
+
+// Covered: all three positive, or zero on a top or left edge (the fill rule). On integers,
+// "e > 0" is "e - 1 >= 0", so with bias 0 on a top or left edge and -1 on the others the rule
+// is: every e + bias >= 0, i.e. no sign bit in their OR. One test with no branch per edge,
+// which matters in the pixel loops.
+bool inside(const Setup& t, const Edges& e) {
+    return ((e.e0 + t.bias[0]) | (e.e1 + t.bias[1]) | (e.e2 + t.bias[2])) >= 0;
+}
+
+// The edge values at point p, and how much they grow per sixteenth to the right and down.
+// edge(a, b, p) is linear in p: moving p by dx sixteenths adds -(b.y - a.y) * dx, moving it by
+// dy adds (b.x - a.x) * dy. So the pixel loops add constants instead of multiplying, and the
+// values stay the exact integers that covers() computes.
+struct Stepper {
+    Edges start, per_x, per_y;
+};
+
+Stepper stepper(const Setup& t, Fixed p) {
+    const Fixed* v = t.v;
+    return {{edge(v[0], v[1], p), edge(v[1], v[2], p), edge(v[2], v[0], p)},
+            {v[0].y - v[1].y, v[1].y - v[2].y, v[2].y - v[0].y},
+            {v[1].x - v[0].x, v[2].x - v[1].x, v[0].x - v[2].x}};
+}
+
+// END SOLUTION
 // TODO 4b: is sample p covered? Fill e[] with the three edge values (e[i] for the edge
 // from v[i] to v[i+1], which is 0 on that edge), then apply the top-left rule to zeros.
 [[maybe_unused]] bool covers(const Setup& t, Fixed p, std::int64_t e[3]) {
@@ -121,11 +163,18 @@ void fill_triangle(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c) {
     Setup t;
     if (!set_up(v0, v1, v2, t)) return;
     const PixelRect box = bounding_box(t.v[0], t.v[1], t.v[2], img.width(), img.height());
-    std::int64_t e[3];
+    // covers(t, center(x, y), e) at every pixel would be correct; stepping the same exact
+    // values by constants (one addition per edge and pixel) is what makes it fast.
+    const Stepper s = stepper(t, center(box.x0, box.y0));
+    const Edges step_x = s.per_x.times(kSubpixelSteps), step_y = s.per_y.times(kSubpixelSteps);
+    Edges row = s.start;
     for (int y = box.y0; y < box.y1; ++y) {
+        Edges e = row;
         for (int x = box.x0; x < box.x1; ++x) {
-            if (covers(t, center(x, y), e)) img.set(x, y, c);
+            if (inside(t, e)) img.set(x, y, c);
+            e += step_x;
         }
+        row += step_y;
     }
     // END SOLUTION
 }
@@ -174,20 +223,31 @@ void fill_triangle_aa(Image& img, Vec2 v0, Vec2 v1, Vec2 v2, Color c, int n) {
     auto clamp = [](std::int64_t v, int hi) { return static_cast<int>(std::clamp<std::int64_t>(v, 0, hi)); };
     const int x0 = clamp(floor_div(min_x, kSubpixelSteps), img.width()), x1 = clamp(ceil_div(max_x, kSubpixelSteps), img.width());
     const int y0 = clamp(floor_div(min_y, kSubpixelSteps), img.height()), y1 = clamp(ceil_div(max_y, kSubpixelSteps), img.height());
+    if (x0 >= x1 || y0 >= y1) return;
     const int step = kSubpixelSteps / n;  // sample spacing in sixteenths
-    std::int64_t e[3];
+    // The edge values at the first sample (i = j = 0) of pixel (x0, y0), stepped by constants
+    // from sample to sample and from pixel to pixel, as in fill_triangle.
+    const Stepper s = stepper(t, {std::int64_t(x0) * kSubpixelSteps + step / 2, std::int64_t(y0) * kSubpixelSteps + step / 2});
+    const Edges sample_x = s.per_x.times(step), sample_y = s.per_y.times(step);
+    const Edges pixel_x = s.per_x.times(kSubpixelSteps), pixel_y = s.per_y.times(kSubpixelSteps);
+    Edges row = s.start;
     for (int y = y0; y < y1; ++y) {
+        Edges pixel = row;
         for (int x = x0; x < x1; ++x) {
             int covered = 0;
+            Edges sample_row = pixel;
             for (int j = 0; j < n; ++j) {
+                Edges e = sample_row;
                 for (int i = 0; i < n; ++i) {
-                    const Fixed s{std::int64_t(x) * kSubpixelSteps + i * step + step / 2,
-                                  std::int64_t(y) * kSubpixelSteps + j * step + step / 2};
-                    covered += covers(t, s, e);
+                    covered += inside(t, e);
+                    e += sample_x;
                 }
+                sample_row += sample_y;
             }
             if (covered > 0) img.blend(x, y, c, double(covered) / (n * n));
+            pixel += pixel_x;
         }
+        row += pixel_y;
     }
     // END SOLUTION
 }

@@ -31,12 +31,27 @@ inline constexpr Color gray{128, 128, 128};
 
 // Rounds a real channel value to the nearest byte, clamping to 0..255. NaN becomes 0, so a
 // bad coverage or light value shows up as black instead of as undefined behaviour.
-std::uint8_t to_channel(double v);
+// (Defined here, inline, because pixel loops call it for every pixel.)
+inline std::uint8_t to_channel(double v) {
+    if (!(v > 0)) return 0;  // also catches NaN
+    if (v >= 255) return 255;
+    return static_cast<std::uint8_t>(v + 0.5);  // round half up; v is positive here
+}
 
 // Color from real channels in [0, 1] (clamped).
 Color from_unit(double r, double g, double b);
 
 // (1 - t) * a + t * b per channel, t clamped to [0, 1]; the result is rounded to nearest.
-Color mix(Color a, Color b, double t);
+inline Color mix(Color a, Color b, double t) {
+    if (!(t > 0)) return a;
+    if (t >= 1) return b;
+    // With 0 < t < 1 the value lies between `from` and `to` (rounding is monotonic), so it
+    // needs no clamping: to_channel's tests would never fire, and adding 0.5 then truncating
+    // is its rounding (half up).
+    auto lerp = [t](std::uint8_t from, std::uint8_t to) {
+        return static_cast<std::uint8_t>(from + t * (static_cast<double>(to) - from) + 0.5);
+    };
+    return {lerp(a.r, b.r), lerp(a.g, b.g), lerp(a.b, b.b)};
+}
 
 }  // namespace raster

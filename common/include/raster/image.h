@@ -72,7 +72,20 @@ public:
 
     // Linear blend of c over the current pixel: new = old + coverage * (c - old), rounded to
     // nearest; coverage is clamped to [0, 1] and NaN counts as 0. Outside: ignored and counted.
-    void blend(int x, int y, Color c, double coverage);
+    // (set() and blend() are defined here, inline: a pixel loop calls them for every pixel, and
+    // a call into another file costs more than the write itself.)
+    void blend(int x, int y, Color c, double coverage) {
+        if (!in_bounds(x, y)) {
+            count_stray_write();
+            return;
+        }
+        count_write();
+        std::uint8_t* p = &bytes_[offset(x, y)];
+        const Color mixed = mix({p[0], p[1], p[2]}, c, coverage);
+        p[0] = mixed.r;
+        p[1] = mixed.g;
+        p[2] = mixed.b;
+    }
 
     void fill(Color c);
 
