@@ -70,6 +70,24 @@ using nlohmann::json;
 
 namespace {
 
+// Writes a whole file, or throws: a disk that is full (or any write error of the grader's own)
+// must end the grading as a failure to retry, never leave a truncated verdict or results.json.
+// The file is written next to its place and renamed over it only when complete.
+void write_file_checked(const fs::path& path, const std::string& text) {
+    const fs::path tmp = path.string() + ".part";
+    {
+        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+        f << text;
+        f.flush();
+        if (!f) {
+            std::error_code ignored;
+            fs::remove(tmp, ignored);
+            throw std::runtime_error("cannot write " + path.string() + " (is the disk full?)");
+        }
+    }
+    fs::rename(tmp, path);
+}
+
 // The milestones as the judge sees them: no render_student (no student code is linked here).
 const std::vector<cp::Suite>& suites() {
     static const std::vector<cp::Suite> all = {
@@ -241,7 +259,7 @@ int cmd_judge(const std::vector<std::string>& args) {
     std::vector<std::string> pictures;
     for (const auto& [pname, img] : v.pictures) pictures.push_back(pname);
     j["pictures"] = pictures;
-    std::ofstream(out / "verdict.json") << j.dump(1) << "\n";
+    write_file_checked(out / "verdict.json", j.dump(1) + "\n");
     std::cout << "VERDICT " << name << " " << (r.status == "pass" ? "PASS" : "FAIL") << " concepts=" << r.concepts
               << "\n";
     return 0;
@@ -510,14 +528,14 @@ int cmd_report(const std::vector<std::string>& args) {
                     {"visibility", "visible"},
                     {"stdout_visibility", "hidden"}};
     if (fs::exists(dir / "execution_time")) results["execution_time"] = std::stod(read_text(dir / "execution_time"));
-    std::ofstream(out / "results.json") << results.dump(2) << "\n";
+    write_file_checked(out / "results.json", results.dump(2) + "\n");
 
     html << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>Grade: " << html_escape(name)
          << "</title>" << kStyle << "</head><body><h1>Grade: " << html_escape(name) << "</h1><p>"
          << html_escape(summary.str()) << "</p><table><tr><th>checkpoint</th><th>status</th><th>points</th>"
          << "<th>concepts</th><th>your ms</th><th>reference ms</th><th>pixels differ</th></tr>\n"
          << rows.str() << "</table>\n" << sections.str() << cp::kPictureLoadMarker << "</body></html>\n";
-    std::ofstream(out / "report.html") << html.str();
+    write_file_checked(out / "report.html", html.str());
     std::cout << summary.str() << "\n";
     return 0;
 }

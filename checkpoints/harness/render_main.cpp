@@ -9,7 +9,8 @@
 // writes the artifacts (PNG images and values.txt) into <out-dir>. Nothing it writes is
 // believed: the trusted judge reads them as hostile input (cp::read_artifacts). The watchdog
 // (RASTER_WATCHDOG_SECONDS) stops a render that hangs and records where it was; the sandbox's
-// own deadline stops everything else.
+// own deadline stops everything else. The program ends right after the artifacts are written
+// (std::_Exit): no static destructor of the student's runs after them.
 //
 // Built per milestone with RASTER_RENDER_HEADER / RASTER_SCENES_HEADER (the milestone's
 // render.h and scenes.h) and RASTER_RENDER_NS (its namespace, e.g. m1cp).
@@ -52,6 +53,13 @@ int main(int argc, char** argv) {
         const double seconds = cp::time_best_of([&] { a = RASTER_RENDER_NS::student::render(id); });
         a.seconds = seconds;
         cp::save_artifacts(out, a);
+        // Nothing of the student's may run after the artifacts are written: no static
+        // destructor, no atexit handler (they could rewrite values.txt). Streams are flushed
+        // here, and the process ends at once.
+        std::cout.flush();
+        std::cerr.flush();
+        std::fflush(nullptr);
+        std::_Exit(0);
     } catch (const std::exception& e) {
         std::cerr << "render " << id << ": " << e.what() << "\n";
         return 1;

@@ -55,8 +55,11 @@ check_clean() {
   if pgrep -u "$uid" >/dev/null 2>&1; then fail "processes of the sandbox uid $uid are left: $(pgrep -u "$uid" -a)"; fi
   if pgrep -f raster-hostile-marker >/dev/null 2>&1; then fail "a hostile child survived: $(pgrep -af raster-hostile-marker)"; fi
   [ -z "$(ls -A "$RASTER_GRADE_TMP")" ] || fail "files left in the grader's temporary root: $(ls -A "$RASTER_GRADE_TMP")"
-  [ -z "$(find /tmp /var/tmp /dev/shm -xdev -user "$uid" 2>/dev/null | head -n 3)" ] ||
-    fail "files of the sandbox uid left: $(find /tmp /var/tmp /dev/shm -xdev -user "$uid" 2>/dev/null | head -n 3)"
+  local places=(/tmp /var/tmp /dev/shm /run/lock /var/lock /dev/mqueue) left
+  left=$(find "${places[@]}" -xdev -user "$uid" 2>/dev/null | head -n 3 || true)
+  [ -z "$left" ] || fail "files of the sandbox uid left: $left"
+  left=$(ipcs -m -q -s 2>/dev/null | awk -v u="$uid" '$3 == u' || true)
+  [ -z "$left" ] || fail "System V IPC objects of the sandbox uid left: $left"
   [ "$before" = "$(fingerprint)" ] || fail "the expected images, the judge or the grader changed"
 }
 
@@ -125,14 +128,22 @@ PY
     sed -e "s|@SOURCE@|$root|g" -e "s|@GRADE@|$build/checkpoints/raster_grade|g" "$src" >"$work/lines.cpp"
     make_submission "$work/sub" "$work/lines.cpp"
     # Public scenes (seed 0): the expected images are exactly the committed ones the attacks go for.
-    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --public --milestones m1 \
-      --only m1.octant_1,m1.clip_one_edge --time 3 --watchdog 2 "$work/sub" >"$work/log" 2>&1 ||
-      { cat "$work/log"; fail "the grader itself failed"; }
-    r=$work/out/results.json
-    got=$(score "$r")
-    [ "$got" = "0" ] || { cat "$work/log"; fail "the attack scored $got"; }
-    if grep -q "<script>document" "$work/out/report.html"; then fail "report.html contains the submission's markup"; fi
-    python3 -c "import json; json.load(open('$r'))" || fail "results.json is not JSON"
+    # Twice: as graded (the code check refuses what uses file, process or system-call functions),
+    # and with --no-code-check, so that the sandbox alone is shown to hold as well.
+    for check in with without; do
+      flag=(); [ "$check" = with ] || flag=(--no-code-check)
+      bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out-$check" --public --milestones m1 \
+        --only m1.octant_1,m1.clip_one_edge --time 3 --watchdog 2 "${flag[@]}" "$work/sub" >"$work/log" 2>&1 ||
+        { cat "$work/log"; fail "the grader itself failed ($check the code check)"; }
+      r=$work/out-$check/results.json
+      got=$(score "$r")
+      [ "$got" = "0" ] || { cat "$work/log"; fail "the attack scored $got ($check the code check)"; }
+      if grep -q "<script>document" "$work/out-$check/report.html"; then fail "report.html contains the submission's markup"; fi
+      python3 -c "import json; json.load(open('$r'))" || fail "results.json is not JSON"
+      # Nothing read at compile time from outside the course's headers reaches the student.
+      if grep -rq "root:x:0:0" "$work/out-$check"; then fail "the results quote /etc/passwd ($check the code check)"; fi
+      check_clean
+    done
     ;;
   stray_reset)
     # The reference, but every line also writes outside the image and then hides it by
@@ -165,6 +176,133 @@ assert t['m1 m1.octant_1']['score'] == 0, t['m1 m1.octant_1']
 assert 'outside the image' in t['m1 m1.octant_1']['output'], t['m1 m1.octant_1']['output']
 assert t['m1 m1.outcodes']['score'] == t['m1 m1.outcodes']['max_score'], "a checkpoint without draw_line lost points"
 PY
+    ;;
+  stray_rewrite)
+    # The reference, but every line also writes outside the image, and a static destructor
+    # (which would run after the artifacts are saved) rewrites values.txt to say "no stray
+    # writes". As graded, the code check refuses the file access (the milestone scores 0, and
+    # the log says why); without the code check, the render ends right after saving its
+    # artifacts (no destructor of the student's runs), and the stray writes are still found.
+    sed 's/^void draw_line(Image& img, Vec2 a, Vec2 b, Color c) {/void real_draw_line(Image\& img, Vec2 a, Vec2 b, Color c) {/' \
+      "$root/solutions/milestone1_lines/lines.cpp" >"$work/lines.cpp"
+    grep -q real_draw_line "$work/lines.cpp" || fail "could not rename draw_line in the solution"
+    cat >>"$work/lines.cpp" <<'CPP'
+#include <fstream>
+namespace m1 {
+inline namespace RASTER_FLAVOUR {
+void draw_line(Image& img, Vec2 a, Vec2 b, Color c) {
+    real_draw_line(img, a, b, c);
+    img.set(-3, -3, c);  // outside
+}
+}  // namespace RASTER_FLAVOUR
+}  // namespace m1
+namespace {
+struct Rewrite {
+    ~Rewrite() {
+        std::ofstream f("out/values.txt");
+        f << "seconds 0.001\nstray_writes 0\n";
+    }
+} rewrite;
+}  // namespace
+CPP
+    make_submission "$work/sub" "$work/lines.cpp"
+    for check in with without; do
+      flag=(); [ "$check" = with ] || flag=(--no-code-check)
+      bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out-$check" --seed 1 --milestones m1 \
+        --only m1.octant_1,m1.outcodes "${flag[@]}" "$work/sub" >"$work/log" 2>&1 || { cat "$work/log"; fail "grading failed"; }
+      python3 - "$work/out-$check/results.json" "$check" <<'PY' || fail "the rewritten values.txt earned points ($check the code check)"
+import json, sys
+r = json.load(open(sys.argv[1]))
+t = {x['name']: x for x in r['tests']}
+assert t['m1 m1.octant_1']['score'] == 0, t['m1 m1.octant_1']
+if sys.argv[2] == 'with':
+    assert r['score'] == 0, r['score']
+    assert 'file access' in json.dumps(r), "the refusal does not say why"
+else:
+    assert 'outside the image' in t['m1 m1.octant_1']['output'], t['m1 m1.octant_1']['output']
+    assert t['m1 m1.outcodes']['score'] == t['m1 m1.outcodes']['max_score'], "a checkpoint without draw_line lost points"
+PY
+    done
+    ;;
+  batch_beside_attacks)
+    # An honest student graded at the same time as attacks (a render that runs a classmate's
+    # program, one that leaves files and IPC objects behind, a zip bomb; graded without the code
+    # check, so that only the sandbox and the folders' permissions stand in the way) keeps every
+    # point; each attack scores 0 and still gets a grade.
+    mkdir "$work/class"
+    make_submission "$work/ref"; (cd "$work/ref" && zip -qr "$work/class/alice.zip" .)
+    for a in run_classmate leave_files; do
+      sed -e "s|@SOURCE@|$root|g" -e "s|@GRADE@|$build/checkpoints/raster_grade|g" "$here/hostile_submissions/$a.cpp" >"$work/$a.cpp"
+      make_submission "$work/class/mallory_$a" "$work/$a.cpp"
+    done
+    make_submission "$work/bomb"
+    truncate -s 700M "$work/bomb/pad1.bin" "$work/bomb/pad2.bin"
+    (cd "$work/bomb" && zip -q -1 -r "$work/class/bomb.zip" .)
+    rm -rf "$work/bomb"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
+      --only m1.outcodes,m1.octant_1,m1.octant_3 --time 3 --watchdog 2 --no-code-check -j 4 --batch "$work/class" >"$work/log" 2>&1 ||
+      { cat "$work/log"; fail "batch grading failed"; }
+    python3 - "$work/out/class.csv" <<'PY' || { cat "$work/log"; fail "class.csv is wrong"; }
+import csv, sys
+rows = {r["submission"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert set(rows) == {"alice", "bomb", "mallory_run_classmate", "mallory_leave_files"}, rows.keys()
+assert float(rows["alice"]["m1"]) == 5, rows["alice"]
+for who in ("bomb", "mallory_run_classmate", "mallory_leave_files"):
+    assert float(rows[who]["m1"]) == 0, rows[who]
+PY
+    grep -q "more than the grader unpacks" "$work/out/bomb.log" || fail "the zip bomb was not refused as a whole: $(cat "$work/out/bomb.log")"
+    for who in alice bomb mallory_run_classmate mallory_leave_files; do [ -f "$work/out/$who/results.json" ] || fail "no grade for $who"; done
+    for u in 1 2 3; do if pgrep -u "$((uid + u))" >/dev/null; then fail "processes of uid $((uid + u)) are left"; fi; done
+    ;;
+  zip_bomb)
+    # A zip whose lines.cpp unpacks to 300 MB: that entry is not even unpacked (a declared file
+    # name, but more than 1 MiB), the other milestones keep their points, and nothing crashes.
+    make_submission "$work/sub"
+    truncate -s 300M "$work/sub/milestone1_lines/lines.cpp"
+    (cd "$work/sub" && zip -q -1 -r "$work/sub.zip" .)
+    rm -rf "$work/sub"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1,m2 \
+      --only m1.octant_1,m2.top_left "$work/sub.zip" >"$work/log" 2>&1 || { cat "$work/log"; fail "grading failed"; }
+    r=$work/out/results.json
+    [ "$(score "$r" m1)" = 0 ] || fail "the oversized lines.cpp scored $(score "$r" m1)"
+    [ "$(score "$r" m2)" = "$(max_score "$r" m2)" ] || fail "m2 lost points beside the oversized lines.cpp"
+    grep -q "no single milestone1_lines/lines.cpp" "$work/log" || fail "the log does not say lines.cpp was not taken"
+    ;;
+  full_disk)
+    # The grader's own folder on a small file system that fills up: a grading failure (exit 3,
+    # "GRADING FAILURE", no results.json), never a grade of 0.
+    mkdir "$work/small"
+    if ! mount -t tmpfs -o size=3m,mode=0711 tmpfs "$work/small" 2>/dev/null; then
+      echo "skipped: cannot mount a small tmpfs here"; exit 77
+    fi
+    trap 'umount "$work/small" 2>/dev/null || true; [ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
+    mkdir -m 711 "$work/small/tmp"
+    make_submission "$work/sub"
+    rc=0
+    RASTER_GRADE_TMP=$work/small/tmp bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 \
+      --milestones m1 --only m1.octant_1 "$work/sub" >"$work/log" 2>&1 || rc=$?
+    [ "$rc" = 3 ] || { cat "$work/log"; fail "a full disk gave exit status $rc, not 3"; }
+    grep -q "GRADING FAILURE" "$work/log" || fail "a full disk is not reported as a grading failure"
+    [ ! -e "$work/out/results.json" ] || fail "a full disk still wrote a results.json"
+    [ -z "$(ls -A "$work/small/tmp")" ] || fail "the full disk kept the grader's files: $(ls -A "$work/small/tmp")"
+    umount "$work/small"
+    ;;
+  two_at_once)
+    # Two grades started at once with the same --uid: each takes its own sandbox uid (a lock per
+    # uid), so neither's clean-up kills the other's sandboxes; both grade in full.
+    make_submission "$work/sub"
+    for i in 1 2; do
+      bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out$i" --seed 1 --milestones m1 \
+        --only m1.octant_1,m1.octant_3,m1.clip_one_edge "$work/sub" >"$work/log$i" 2>&1 &
+    done
+    rc=0; wait -n || rc=$?; wait -n || rc=$((rc + $?))
+    [ "$rc" = 0 ] || { cat "$work/log1" "$work/log2"; fail "a grade failed beside another"; }
+    for i in 1 2; do
+      [ "$(score "$work/out$i/results.json")" = "$(max_score "$work/out$i/results.json")" ] || fail "grade $i lost points"
+    done
+    u1=$(sed -n 's/.*, uid \([0-9]*\))$/\1/p' "$work/log1") u2=$(sed -n 's/.*, uid \([0-9]*\))$/\1/p' "$work/log2")
+    [ -n "$u1" ] && [ "$u1" != "$u2" ] || fail "both grades used uid $u1"
+    if pgrep -u "$((uid + 1))" >/dev/null; then fail "processes of uid $((uid + 1)) are left"; fi
     ;;
   report_html)
     # The per-submission page in a browser: a section per checkpoint with the student's picture,

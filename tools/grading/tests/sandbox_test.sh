@@ -172,6 +172,23 @@ case "$case_name" in
     sandbox -- sh -c 'echo "sandbox-run: result=timeout exit=124" >&2; exit 124'
     expect exited 124
     ;;
+  reaped)  # under a PID 1 that never reaps (a container's), killed orphans leave no zombie
+    [ "$is_root" = 1 ] || skip "needs root (the sweep kills as the sandbox uid)"
+    unshare --pid --fork --mount-proc true 2>/dev/null || skip "no PID namespace here to play a non-reaping PID 1"
+    marker="sandbox-reaped-$$-$RANDOM"
+    # In a PID namespace whose PID 1 is `sleep` (never waits): orphans would become its zombies.
+    unshare --pid --fork --kill-child --mount-proc sh -c '
+      ( "$1" --mode "$2" --uid "$3" --workdir "$4" --time 5 -- ./hostile orphans "$5" 4 >"$6/out" 2>"$6/err"
+        sleep 0.3
+        ps -U "$3" -o pid=,stat=,comm= >"$6/left" ) &
+      exec sleep 15' reaper "$sandbox" "$mode" "$uid" "$base/work" "$marker" "$base" &
+    ns=$!
+    for _ in $(seq 150); do [ -f "$base/left" ] && break; sleep 0.1; done
+    kill "$ns" 2>/dev/null; wait "$ns" 2>/dev/null
+    [ -f "$base/left" ] || fail "the sandbox did not finish under the non-reaping PID 1"
+    grep -q "started 4 orphans" "$base/out" || fail "the hostile program did not start its orphans"
+    [ ! -s "$base/left" ] || fail "processes (zombies) of uid $uid are left: $(tr '\n' ' ' <"$base/left")"
+    ;;
   nonroot)  # started by an ordinary user: says so, and still kills, limits and reports
     [ "$is_root" = 1 ] || skip "needs root to start sandbox-run as another user"
     chown "$uid:$uid" "$base/work"
