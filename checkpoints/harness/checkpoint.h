@@ -89,6 +89,10 @@ struct Tolerance {
 // milestone judges that must know before the verdict whether a picture would fail.
 bool exceeds_tolerance(const raster::Image& actual, const raster::Image& expected, const Tolerance& tol);
 
+// The values whose names start with `prefix`, the prefix taken off: the numbers a render half
+// stored for one prerequisite (under "pre<group>.").
+std::map<std::string, double> values_under(const std::map<std::string, double>& all, const std::string& prefix);
+
 // One thing the judge found wrong, in a student's words. `topic` is a short tag naming the
 // idea the student should revisit ("endpoint", "octant", "clipping", ...): the summary table
 // shows it, and the project's own tests check that each deliberate bug names its concept.
@@ -103,6 +107,11 @@ struct Finding {
     std::string hint = {};
     std::string todo = {};
 };
+
+// A prerequisite's own finding, told to the checkpoint that depends on it: "fix TODO N first
+// (see <checkpoint>, which tests it alone; <why>): <its message>", with a hint ending in
+// `hint_tail`.
+Finding fix_first(Finding f, const std::string& checkpoint, const std::string& why, const std::string& hint_tail);
 
 struct Judgement {
     std::vector<Finding> findings;  // empty: the properties hold

@@ -191,6 +191,21 @@ bool exceeds_tolerance(const raster::Image& actual, const raster::Image& expecte
     return pc.strict_diffs > 0 || pc.over_limit;
 }
 
+std::map<std::string, double> values_under(const std::map<std::string, double>& all, const std::string& prefix) {
+    std::map<std::string, double> out;
+    for (auto it = all.lower_bound(prefix); it != all.end() && it->first.rfind(prefix, 0) == 0; ++it) {
+        out[it->first.substr(prefix.size())] = it->second;
+    }
+    return out;
+}
+
+Finding fix_first(Finding f, const std::string& checkpoint, const std::string& why, const std::string& hint_tail) {
+    const std::string todo = f.todo.empty() ? "that TODO" : f.todo;
+    f.message = "fix " + todo + " first (see " + checkpoint + ", which tests it alone; " + why + "): " + f.message;
+    f.hint = "fix " + todo + " first: " + checkpoint + " checks it on its own, and " + hint_tail;
+    return f;
+}
+
 std::uint64_t scene_seed_from_env() {
     const std::string s = env_or("RASTER_SCENE_SEED", "0");
     char* end = nullptr;

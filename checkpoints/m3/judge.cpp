@@ -613,27 +613,15 @@ std::vector<cp::Finding> prerequisite_findings(const Scene& s, const cp::Artifac
             continue;
         }
         const std::string prefix = prerequisite_key(g);
-        auto strip = [&prefix](const Values& all) {
-            Values out;
-            for (auto it = all.lower_bound(prefix); it != all.end() && it->first.rfind(prefix, 0) == 0; ++it) {
-                out[it->first.substr(prefix.size())] = it->second;
-            }
-            return out;
-        };
-        const Values mine = strip(artifacts.values), ref = strip(reference.values);
+        const Values mine = cp::values_under(artifacts.values, prefix), ref = cp::values_under(reference.values, prefix);
         cp::Judgement scratch;
         Ctx sub{s, mine, ref, scratch, expected};
         judge_group(g, sub);
         if (scratch.findings.empty()) continue;
         broken.insert(g);
-        cp::Finding f = scratch.findings.front();
-        const std::string id = prerequisite_checkpoint(g);
-        const std::string todo = f.todo.empty() ? "that TODO" : f.todo;
         const std::string what = s.panels.empty() ? "these numbers are computed with it" : "this picture is drawn with it";
-        f.message = "fix " + todo + " first (see " + id + ", which tests it alone; " + what + "): " + f.message;
-        f.hint = "fix " + todo + " first: " + id + " checks it on its own, and this checkpoint cannot pass before "
-                 "that one does";
-        first.push_back(f);
+        first.push_back(cp::fix_first(scratch.findings.front(), prerequisite_checkpoint(g), what,
+                                      "this checkpoint cannot pass before that one does"));
     }
     return first;
 }

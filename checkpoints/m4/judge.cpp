@@ -926,25 +926,14 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
     std::vector<cp::Finding> first;
     for (Group g : fails ? prerequisite_groups(s) : std::vector<Group>{}) {
         const std::string prefix = prerequisite_key(g);
-        auto strip = [&prefix](const Values& all) {
-            Values out;
-            for (auto it = all.lower_bound(prefix); it != all.end() && it->first.rfind(prefix, 0) == 0; ++it) {
-                out[it->first.substr(prefix.size())] = it->second;
-            }
-            return out;
-        };
-        const Values mine = strip(artifacts.values), ref = strip(reference.values);
+        const Values mine = cp::values_under(artifacts.values, prefix), ref = cp::values_under(reference.values, prefix);
         cp::Judgement scratch;
         Ctx sub{s, mine, ref, scratch};
         judge_group(g, sub);
         if (scratch.findings.empty()) continue;
-        cp::Finding f = scratch.findings.front();
-        const std::string pid = prerequisite_checkpoint(g);
-        const std::string todo = f.todo.empty() ? "that TODO" : f.todo;
-        f.message = "fix " + todo + " first (see " + pid + ", which tests it alone; this picture is drawn with it): " + f.message;
-        f.hint = "fix " + todo + " first: " + pid + " checks it on its own, and this picture cannot come out right "
-                 "before that checkpoint passes";
-        first.push_back(f);
+        first.push_back(cp::fix_first(scratch.findings.front(), prerequisite_checkpoint(g),
+                                      "this picture is drawn with it",
+                                      "this picture cannot come out right before that checkpoint passes"));
     }
     if (!first.empty()) {
         j.findings.resize(before);
