@@ -55,6 +55,18 @@ export DEBIAN_FRONTEND=noninteractive
 if [ ${#missing[@]} -gt 0 ]; then
   echo "Installing: ${missing[*]}"
   "${sudo[@]}" apt-get update -qq
+  # A package the distribution does not offer would make apt-get fail with a bare "Unable to
+  # locate package": say which, and on Ubuntu where they live (the universe component, which a
+  # desktop install enables and a minimal system may not).
+  unknown=()
+  for p in "${missing[@]}"; do has_candidate "$p" || unknown+=("$p"); done
+  if [ ${#unknown[@]} -gt 0 ]; then
+    echo "error: this system's package sources offer no ${unknown[*]}" >&2
+    if grep -qs '^ID=ubuntu' /etc/os-release; then
+      echo "On Ubuntu they are in the 'universe' component: sudo add-apt-repository universe (package software-properties-common), then run this again." >&2
+    fi
+    exit 1
+  fi
   "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 if [ ${#missing[@]} -eq 0 ] && [ ${#missing_optional[@]} -gt 0 ]; then
