@@ -42,6 +42,38 @@ private:
     std::mt19937_64 gen_;
 };
 
+// A milestone's scenes as a checkpoint program sees them: the public ones, or, after use(seed)
+// with a seed other than 0, each public scene passed through the milestone's vary() with a
+// generator of its own (the seed and the scene's id), as grading's hidden variants are made.
+// use(0) returns to the public scenes. Scene needs an `id`.
+template <typename Scene>
+class SceneVariants {
+public:
+    using PublicScenes = const std::vector<Scene>& (*)();
+    using Vary = Scene (*)(const Scene&, VariantRng&);
+    constexpr SceneVariants(PublicScenes public_scenes, Vary vary) : public_(public_scenes), vary_(vary) {}
+
+    const std::vector<Scene>& scenes() const { return seed_ == 0 ? public_() : varied_; }
+    std::uint64_t seed() const { return seed_; }
+    void use(std::uint64_t seed) {
+        if (seed == seed_) return;
+        seed_ = 0;  // the public scenes until the varied ones are complete
+        varied_.clear();
+        if (seed == 0) return;
+        for (const Scene& s : public_()) {
+            VariantRng rng(seed, s.id);
+            varied_.push_back(vary_(s, rng));
+        }
+        seed_ = seed;
+    }
+
+private:
+    PublicScenes public_;
+    Vary vary_;
+    std::uint64_t seed_ = 0;
+    std::vector<Scene> varied_;
+};
+
 // A symmetry of the w x h image (transpose only when square), then an integer translation.
 // Each maps pixel centers to pixel centers, the 1/16 grid to itself and the sample grid of
 // fill_triangle_aa to itself (a mirror maps x to w - x exactly). Milestones 1 and 2 use it.

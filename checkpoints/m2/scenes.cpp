@@ -395,25 +395,18 @@ const std::vector<Scene>& public_scenes() {
     return all;
 }
 
-std::uint64_t current_seed = 0;
-std::vector<Scene> varied;
+// Made on first use: the checkpoints register (and list the scenes) during static initialization.
+cp::SceneVariants<Scene>& variants() {
+    static cp::SceneVariants<Scene> all(public_scenes, vary);
+    return all;
+}
 
 }  // namespace
 
-const std::vector<Scene>& scenes() { return current_seed == 0 ? public_scenes() : varied; }
+const std::vector<Scene>& scenes() { return variants().scenes(); }
 
 const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
 
-void use_variant(std::uint64_t seed) {
-    if (seed == current_seed) return;
-    current_seed = 0;
-    varied.clear();
-    if (seed == 0) return;
-    for (const Scene& s : public_scenes()) {
-        Rng rng(seed, s.id);
-        varied.push_back(vary(s, rng));
-    }
-    current_seed = seed;
-}
+void use_variant(std::uint64_t seed) { variants().use(seed); }
 
 }  // namespace m2cp
