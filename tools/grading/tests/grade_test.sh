@@ -63,6 +63,35 @@ check_clean() {
   [ "$before" = "$(fingerprint)" ] || fail "the expected images, the judge or the grader changed"
 }
 
+# with_private_tree CMD...: CMD in a mount namespace of its own in which the repository and the
+# build folder are root's only (mode 0700), as the instructor must keep them where the sandbox
+# hides files by permissions only (unshare, plain); the real folders are left as they are. In
+# that namespace each folder is an empty 0700 tmpfs holding binds of its real entries.
+with_private_tree() {
+  local hidden=("$root")
+  case "$build/" in "$root"/*) ;; *) hidden+=("$build") ;; esac
+  mkdir -m 700 "$work/hold"
+  unshare --mount --propagation private -- bash -c '
+    set -e; hold=$1; n=$2; shift 2
+    for ((i = 0; i < n; i++)); do
+      d=$1; shift
+      mkdir "$hold/$i"; mount --bind "$d" "$hold/$i"
+      mount -t tmpfs -o mode=0700 tmpfs "$d"
+      for e in "$hold/$i"/* "$hold/$i"/.[!.]*; do
+        t=$d/${e##*/}
+        if [ -L "$e" ]; then cp -P "$e" "$t"
+        elif [ -d "$e" ]; then mkdir "$t"; mount --bind "$e" "$t"
+        elif [ -e "$e" ]; then : >"$t"; mount --bind "$e" "$t"; fi
+      done
+    done
+    exec "$@"' with_private_tree "$work/hold" "${#hidden[@]}" "${hidden[@]}" "$@"
+}
+# mode_works MODE: this machine has the sandbox mechanism MODE (as root).
+mode_works() {
+  mkdir -p "$work/probe/w"
+  bash "$root/tools/grading/sandbox-run" --quiet --mode "$1" --workdir "$work/probe/w" --uid "$uid" --time 10 -- true >/dev/null 2>&1
+}
+
 case "$case_name" in
   reference)
     make_submission "$work/sub"
@@ -254,6 +283,43 @@ PY
     for who in alice bomb mallory_run_classmate mallory_leave_files; do [ -f "$work/out/$who/results.json" ] || fail "no grade for $who"; done
     for u in 1 2 3; do if pgrep -u "$((uid + u))" >/dev/null; then fail "processes of uid $((uid + u)) are left"; fi; done
     ;;
+  isolation-*)
+    # Two submissions graded side by side in --batch with one mechanism: mallory's render (graded
+    # without the code check, so that only the sandbox and the folders' permissions stand in the
+    # way; tests/classmate_probe.cpp) leaves System V and POSIX IPC objects behind and tries to
+    # enter alice's folder beside its own. It sees it (without bubblewrap: the test's premise)
+    # but cannot enter it, scores 0, alice keeps every point, and no IPC object or file of
+    # either uid outlives the grade.
+    mode=${case_name#isolation-}
+    mode_works "$mode" || { echo "skipped: no $mode sandbox here"; exit 77; }
+    chmod 1777 "$RASTER_GRADE_TMP"  # listable, as /tmp is: the classmate's folder can be seen
+    mkdir "$work/class"
+    make_submission "$work/class/alice"
+    make_submission "$work/class/mallory" "$here/classmate_probe.cpp"
+    with_private_tree bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
+      --only m1.octant_1,m1.octant_3,m1.octant_5,m1.clip_one_edge --time 4 --watchdog 3 --no-code-check --mode "$mode" \
+      -j 2 --batch "$work/class" >"$work/log" 2>&1 || { cat "$work/log"; fail "batch grading failed"; }
+    python3 - "$work/out" "$mode" <<'PY' || { cat "$work/log" "$work/out/"*.log; fail "see above"; }
+import json, sys
+out, mode = sys.argv[1], sys.argv[2]
+alice = json.load(open(f"{out}/alice/results.json"))
+mallory = json.load(open(f"{out}/mallory/results.json"))
+assert alice["score"] == sum(t["max_score"] for t in alice["tests"]), f"alice lost points: {alice['score']}"
+assert mallory["score"] == 0, f"mallory scored {mallory['score']}"
+said = " ".join(t["output"] for t in mallory["tests"])
+assert "exited with status 43" not in said, "mallory entered alice's folder"
+assert "exited with status 4" in said, "mallory's probe did not run: " + said[:400]
+if mode != "bwrap":
+    assert "exited with status 42" in said, "mallory never saw alice's folder (the test proves nothing): " + said[:400]
+PY
+    for u in 0 1 2; do
+      if pgrep -u "$((uid + u))" >/dev/null; then fail "processes of uid $((uid + u)) are left"; fi
+      left=$(ipcs -m -q -s 2>/dev/null | awk -v u="$((uid + u))" '$3 == u' || true)
+      [ -z "$left" ] || fail "System V IPC objects of uid $((uid + u)) are left: $left"
+      left=$(find /tmp /var/tmp /dev/shm /run/lock /dev/mqueue -xdev -user "$((uid + u))" 2>/dev/null | head -n 3 || true)
+      [ -z "$left" ] || fail "files of uid $((uid + u)) are left: $left"
+    done
+    ;;
   zip_bomb)
     # A zip whose lines.cpp unpacks to 300 MB: that entry is not even unpacked (a declared file
     # name, but more than 1 MiB), the other milestones keep their points, and nothing crashes.
@@ -285,6 +351,28 @@ PY
     grep -q "GRADING FAILURE" "$work/log" || fail "a full disk is not reported as a grading failure"
     [ ! -e "$work/out/results.json" ] || fail "a full disk still wrote a results.json"
     [ -z "$(ls -A "$work/small/tmp")" ] || fail "the full disk kept the grader's files: $(ls -A "$work/small/tmp")"
+    umount "$work/small"
+    # A render that fills its own working folder (--disk 40: a tmpfs of the submission's own)
+    # costs that submission only: the honest classmate graded beside it in a batch, on a disk of
+    # 160 MB that the render alone would fill, keeps every point, and both get a grade.
+    mount -t tmpfs -o size=160m,mode=0711 tmpfs "$work/small"
+    mkdir -m 711 "$work/small/tmp"
+    mkdir "$work/class"
+    make_submission "$work/class/alice"
+    make_submission "$work/class/mallory" "$here/fill_disk.cpp"
+    RASTER_GRADE_TMP=$work/small/tmp bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 \
+      --milestones m1 --only m1.octant_1,m1.octant_3,m1.clip_one_edge --disk 40 --no-code-check -j 2 \
+      --batch "$work/class" >"$work/log" 2>&1 || { cat "$work/log" "$work/out/"*.log; fail "batch grading failed beside a full folder"; }
+    python3 - "$work/out" <<'PY' || { cat "$work/log" "$work/out/"*.log; fail "see above"; }
+import json, sys
+alice = json.load(open(f"{sys.argv[1]}/alice/results.json"))
+mallory = json.load(open(f"{sys.argv[1]}/mallory/results.json"))
+assert alice["score"] == sum(t["max_score"] for t in alice["tests"]), f"alice lost points: {alice['score']}"
+assert mallory["score"] == 0, f"mallory scored {mallory['score']}"
+assert "refused" not in json.dumps(mallory), "mallory's render did not run (refused by the code check)"
+PY
+    grep -q "working folder 40 MiB" "$work/out/mallory.log" || fail "the working folder was not limited: $(head -n 3 "$work/out/mallory.log")"
+    [ -z "$(ls -A "$work/small/tmp")" ] || fail "files left: $(ls -A "$work/small/tmp")"
     umount "$work/small"
     ;;
   two_at_once)
