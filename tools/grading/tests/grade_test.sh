@@ -8,6 +8,9 @@
 # (RASTER_GRADE_TMP), so cases can run in parallel; afterwards no process of that uid and no
 # file in that root may be left, and the expected images and the judge must be unchanged.
 # Exit 0: the case holds; 77: skipped (no sandbox here); anything else: a failure, explained.
+# The whole script is one block, read before any of it runs: a copy edited or replaced while it
+# runs (a checkout, a merge) cannot change a grade in progress.
+{
 set -euo pipefail
 case_name=$1 build=$2 uid=$3
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -46,6 +49,10 @@ import json,sys
 r=json.load(open(sys.argv[1])); p=sys.argv[2] if len(sys.argv)>2 else ''
 s=sum(t['max_score'] for t in r['tests'] if t['name'].startswith(p)); print(int(s) if s==int(s) else s)" "$@"; }
 
+# The command-line marker of the hostile children this test starts (outliving_children.cpp): its
+# own, since another test's children may be alive while this one looks for survivors.
+marker=raster-hostile-marker-$uid
+
 fingerprint() {
   (cd "$root/checkpoints/expected" && find . -type f -print0 | sort -z | xargs -0 sha256sum)
   sha256sum "$build/checkpoints/raster_grade" "$root/tools/grading/grade" "$root/tools/grading/sandbox-run"
@@ -53,7 +60,7 @@ fingerprint() {
 before=$(fingerprint)
 check_clean() {
   if pgrep -u "$uid" >/dev/null 2>&1; then fail "processes of the sandbox uid $uid are left: $(pgrep -u "$uid" -a)"; fi
-  if pgrep -f raster-hostile-marker >/dev/null 2>&1; then fail "a hostile child survived: $(pgrep -af raster-hostile-marker)"; fi
+  if pgrep -f "$marker" >/dev/null 2>&1; then fail "a hostile child survived: $(pgrep -af "$marker")"; fi
   [ -z "$(ls -A "$RASTER_GRADE_TMP")" ] || fail "files left in the grader's temporary root: $(ls -A "$RASTER_GRADE_TMP")"
   local places=(/tmp /var/tmp /dev/shm /run/lock /var/lock /dev/mqueue) left
   left=$(find "${places[@]}" -xdev -user "$uid" 2>/dev/null | head -n 3 || true)
@@ -154,7 +161,7 @@ PY
   hostile-*)
     attack=${case_name#hostile-}
     src=$here/hostile_submissions/$attack.cpp
-    sed -e "s|@SOURCE@|$root|g" -e "s|@GRADE@|$build/checkpoints/raster_grade|g" "$src" >"$work/lines.cpp"
+    sed -e "s|@SOURCE@|$root|g" -e "s|@GRADE@|$build/checkpoints/raster_grade|g" -e "s|@MARKER@|$marker|g" "$src" >"$work/lines.cpp"
     make_submission "$work/sub" "$work/lines.cpp"
     # Public scenes (seed 0): the expected images are exactly the committed ones the attacks go for.
     # Twice: as graded (the code check refuses what uses file, process or system-call functions),
@@ -261,7 +268,7 @@ PY
     mkdir "$work/class"
     make_submission "$work/ref"; (cd "$work/ref" && zip -qr "$work/class/alice.zip" .)
     for a in run_classmate leave_files; do
-      sed -e "s|@SOURCE@|$root|g" -e "s|@GRADE@|$build/checkpoints/raster_grade|g" "$here/hostile_submissions/$a.cpp" >"$work/$a.cpp"
+      sed -e "s|@SOURCE@|$root|g" -e "s|@GRADE@|$build/checkpoints/raster_grade|g" -e "s|@MARKER@|$marker|g" "$here/hostile_submissions/$a.cpp" >"$work/$a.cpp"
       make_submission "$work/class/mallory_$a" "$work/$a.cpp"
     done
     make_submission "$work/bomb"
@@ -375,6 +382,37 @@ PY
     [ -z "$(ls -A "$work/small/tmp")" ] || fail "files left: $(ls -A "$work/small/tmp")"
     umount "$work/small"
     ;;
+  side_by_side)
+    # Two grades of different submissions at once, each with its own --uid (as CTest runs these
+    # cases side by side): an attack whose render leaves children behind and writes into the
+    # shared world-writable folders (graded without the code check, so that its clean-up has
+    # something to sweep), and the reference. Neither's clean-up touches the other: the
+    # reference keeps every point, the attack scores 0, and both get a grade.
+    for a in outliving_children leave_files; do
+      sed -e "s|@MARKER@|$marker|g" "$here/hostile_submissions/$a.cpp" >"$work/$a.cpp"
+    done
+    make_submission "$work/attack" "$work/outliving_children.cpp" "" "" ""
+    make_submission "$work/attack2" "$work/leave_files.cpp"
+    make_submission "$work/honest"
+    pids=()
+    for who in attack:0 honest:2 attack2:3; do
+      sub=${who%:*} offset=${who#*:} flag=()
+      [ "$sub" = honest ] || flag=(--no-code-check)
+      bash "$grade" --no-build --build "$build" --uid "$((uid + offset))" --out "$work/out-$sub" --seed 1 --milestones m1 \
+        --only m1.octant_1,m1.octant_3,m1.clip_one_edge,m1.outcodes --time 3 --watchdog 2 "${flag[@]}" \
+        "$work/$sub" >"$work/log-$sub" 2>&1 &
+      pids+=($!)
+    done
+    for p in "${pids[@]}"; do wait "$p" || { cat "$work"/log-*; fail "a grade failed beside another"; }; done
+    r=$work/out-honest/results.json
+    [ "$(score "$r")" = "$(max_score "$r")" ] || { cat "$work/log-honest"; fail "the reference lost points beside the attacks"; }
+    for sub in attack attack2; do
+      [ "$(score "$work/out-$sub/results.json")" = 0 ] || { cat "$work/log-$sub"; fail "$sub scored beside the reference"; }
+    done
+    for u in 0 2 3; do
+      if pgrep -u "$((uid + u))" >/dev/null; then fail "processes of uid $((uid + u)) are left"; fi
+    done
+    ;;
   two_at_once)
     # Two grades started at once with the same --uid: each takes its own sandbox uid (a lock per
     # uid), so neither's clean-up kills the other's sandboxes; both grade in full.
@@ -388,7 +426,7 @@ PY
     for i in 1 2; do
       [ "$(score "$work/out$i/results.json")" = "$(max_score "$work/out$i/results.json")" ] || fail "grade $i lost points"
     done
-    u1=$(sed -n 's/.*, uid \([0-9]*\))$/\1/p' "$work/log1") u2=$(sed -n 's/.*, uid \([0-9]*\))$/\1/p' "$work/log2")
+    u1=$(sed -n 's/.*, uid \([0-9]*\), .*/\1/p' "$work/log1") u2=$(sed -n 's/.*, uid \([0-9]*\), .*/\1/p' "$work/log2")
     [ -n "$u1" ] && [ "$u1" != "$u2" ] || fail "both grades used uid $u1"
     if pgrep -u "$((uid + 1))" >/dev/null; then fail "processes of uid $((uid + 1)) are left"; fi
     ;;
@@ -507,3 +545,5 @@ CPP
 esac
 check_clean
 echo "ok: $case_name"
+exit
+}
