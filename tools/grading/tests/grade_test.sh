@@ -8,8 +8,8 @@
 # (RASTER_GRADE_TMP), so cases can run in parallel; afterwards no process of that uid and no
 # file in that root may be left, and the expected images and the judge must be unchanged.
 # Exit 0: the case holds; 77: skipped (no sandbox here); anything else: a failure, explained.
-# The whole script is one block, read before any of it runs: a copy edited or replaced while it
-# runs (a checkout, a merge) cannot change a grade in progress.
+# The whole script is one block, read before any of it runs: bash reads a script as it goes, so
+# editing this file in place while it runs would otherwise change (or break) a run in progress.
 {
 set -euo pipefail
 case_name=$1 build=$2 uid=$3
@@ -265,6 +265,7 @@ PY
     # program, one that leaves files and IPC objects behind, a zip bomb; graded without the code
     # check, so that only the sandbox and the folders' permissions stand in the way) keeps every
     # point; each attack scores 0 and still gets a grade.
+    chmod 1777 "$RASTER_GRADE_TMP"  # listable, as /tmp is: the classmates' folders can be seen
     mkdir "$work/class"
     make_submission "$work/ref"; (cd "$work/ref" && zip -qr "$work/class/alice.zip" .)
     for a in run_classmate leave_files; do
