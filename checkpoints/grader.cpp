@@ -178,6 +178,28 @@ int cmd_ids(const std::string& m) {
     return 0;
 }
 
+// What of the student's artifacts the trusted side can check (tools/grading/README.md, "What the
+// render reports about itself"): the pictures and the answers, not the counts that only the
+// render process itself measures. Those (writes outside the image, the runaway flag, milestone
+// 4's stage counts and buffer capacities) are replaced by the reference's; a checkpoint that
+// fails only on them passes in grading, and what they said is shown as advice, for no points.
+cp::Artifacts verifiable_part(const cp::Artifacts& student, const cp::Artifacts& reference) {
+    cp::Artifacts a = student;
+    a.stray_writes = reference.stray_writes;
+    for (auto& [name, t] : a.trace) {
+        const auto it = reference.trace.find(name);
+        t.stray_writes = it == reference.trace.end() ? 0 : it->second.stray_writes;
+    }
+    a.stopped_call.stray_writes = 0;
+    a.values.erase(cp::kRunawayKey);
+    for (auto& [key, value] : a.values) {
+        if (key.find(".stats.") == std::string::npos && key.find("capacity") == std::string::npos) continue;
+        const auto it = reference.values.find(key);
+        if (it != reference.values.end()) value = it->second;
+    }
+    return a;
+}
+
 int cmd_judge(const std::vector<std::string>& args) {
     if (args.size() < 5) throw std::invalid_argument("judge needs <m> <scene-id> <seed> <artifacts-dir> <out-dir>");
     const std::string m = args[0], id = args[1];
@@ -216,6 +238,16 @@ int cmd_judge(const std::vector<std::string>& args) {
         student = cp::Artifacts{};
     }
     cp::Verdict v = cp::judge_checkpoint(s, id, student, reference, expected);
+    // Graded: the verdict on what the trusted side can check; what only the counts said is advice.
+    std::vector<std::string> advice;
+    if (early.empty() && v.record.status != "pass") {
+        cp::Verdict trusted = cp::judge_checkpoint(s, id, verifiable_part(student, reference), reference, expected);
+        for (const std::string& f : v.record.findings) {
+            const auto& kept = trusted.record.findings;
+            if (std::find(kept.begin(), kept.end(), f) == kept.end()) advice.push_back(f);
+        }
+        v = std::move(trusted);
+    }
     if (!early.empty()) {
         // The render itself failed: that is the verdict, whatever its output looks like.
         v.findings.insert(v.findings.begin(), early.begin(), early.end());
@@ -255,7 +287,8 @@ int cmd_judge(const std::vector<std::string>& args) {
               {"student", metrics_json(r.student)},
               {"reference", metrics_json(r.reference)},
               {"measures", r.measures},
-              {"render", status}};
+              {"render", status},
+              {"advice", advice}};
     std::vector<std::string> pictures;
     for (const auto& [pname, img] : v.pictures) pictures.push_back(pname);
     j["pictures"] = pictures;
@@ -387,6 +420,11 @@ std::string checkpoint_output(const json& v, const std::string& why) {
         if (!hint.empty()) o << "hint: " << hint << "\n";
         const std::string diag = v.value("diagnosis", std::string());
         if (!diag.empty()) o << "known bug: " << diag << "\n";
+    }
+    const auto advice = v.value("advice", std::vector<std::string>{});
+    if (!advice.empty()) {
+        o << "\nadvice (not graded: counted inside your own program, which the grader cannot check):\n";
+        for (const std::string& a : advice) o << "  " << a << "\n";
     }
     if (!why.empty()) o << "\n" << why;
     o << std::fixed << std::setprecision(3) << "\nrender time: yours " << v.value("student_ms", 0.0)

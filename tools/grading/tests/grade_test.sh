@@ -8,6 +8,9 @@
 # (RASTER_GRADE_TMP), so cases can run in parallel; afterwards no process of that uid and no
 # file in that root may be left, and the expected images and the judge must be unchanged.
 # Exit 0: the case holds; 77: skipped (no sandbox here); anything else: a failure, explained.
+# The whole script is one block, read before any of it runs: bash reads a script as it goes, so
+# editing this file in place while it runs would otherwise change (or break) a run in progress.
+{
 set -euo pipefail
 case_name=$1 build=$2 uid=$3
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -46,6 +49,10 @@ import json,sys
 r=json.load(open(sys.argv[1])); p=sys.argv[2] if len(sys.argv)>2 else ''
 s=sum(t['max_score'] for t in r['tests'] if t['name'].startswith(p)); print(int(s) if s==int(s) else s)" "$@"; }
 
+# The command-line marker of the hostile children this test starts (outliving_children.cpp): its
+# own, since another test's children may be alive while this one looks for survivors.
+marker=raster-hostile-marker-$uid
+
 fingerprint() {
   (cd "$root/checkpoints/expected" && find . -type f -print0 | sort -z | xargs -0 sha256sum)
   sha256sum "$build/checkpoints/raster_grade" "$root/tools/grading/grade" "$root/tools/grading/sandbox-run"
@@ -53,7 +60,7 @@ fingerprint() {
 before=$(fingerprint)
 check_clean() {
   if pgrep -u "$uid" >/dev/null 2>&1; then fail "processes of the sandbox uid $uid are left: $(pgrep -u "$uid" -a)"; fi
-  if pgrep -f raster-hostile-marker >/dev/null 2>&1; then fail "a hostile child survived: $(pgrep -af raster-hostile-marker)"; fi
+  if pgrep -f "$marker" >/dev/null 2>&1; then fail "a hostile child survived: $(pgrep -af "$marker")"; fi
   [ -z "$(ls -A "$RASTER_GRADE_TMP")" ] || fail "files left in the grader's temporary root: $(ls -A "$RASTER_GRADE_TMP")"
   local places=(/tmp /var/tmp /dev/shm /run/lock /var/lock /dev/mqueue) left
   left=$(find "${places[@]}" -xdev -user "$uid" 2>/dev/null | head -n 3 || true)
@@ -61,6 +68,35 @@ check_clean() {
   left=$(ipcs -m -q -s 2>/dev/null | awk -v u="$uid" '$3 == u' || true)
   [ -z "$left" ] || fail "System V IPC objects of the sandbox uid left: $left"
   [ "$before" = "$(fingerprint)" ] || fail "the expected images, the judge or the grader changed"
+}
+
+# with_private_tree CMD...: CMD in a mount namespace of its own in which the repository and the
+# build folder are root's only (mode 0700), as the instructor must keep them where the sandbox
+# hides files by permissions only (unshare, plain); the real folders are left as they are. In
+# that namespace each folder is an empty 0700 tmpfs holding binds of its real entries.
+with_private_tree() {
+  local hidden=("$root")
+  case "$build/" in "$root"/*) ;; *) hidden+=("$build") ;; esac
+  mkdir -m 700 "$work/hold"
+  unshare --mount --propagation private -- bash -c '
+    set -e; hold=$1; n=$2; shift 2
+    for ((i = 0; i < n; i++)); do
+      d=$1; shift
+      mkdir "$hold/$i"; mount --bind "$d" "$hold/$i"
+      mount -t tmpfs -o mode=0700 tmpfs "$d"
+      for e in "$hold/$i"/* "$hold/$i"/.[!.]*; do
+        t=$d/${e##*/}
+        if [ -L "$e" ]; then cp -P "$e" "$t"
+        elif [ -d "$e" ]; then mkdir "$t"; mount --bind "$e" "$t"
+        elif [ -e "$e" ]; then : >"$t"; mount --bind "$e" "$t"; fi
+      done
+    done
+    exec "$@"' with_private_tree "$work/hold" "${#hidden[@]}" "${hidden[@]}" "$@"
+}
+# mode_works MODE: this machine has the sandbox mechanism MODE (as root).
+mode_works() {
+  mkdir -p "$work/probe/w"
+  bash "$root/tools/grading/sandbox-run" --quiet --mode "$1" --workdir "$work/probe/w" --uid "$uid" --time 10 -- true >/dev/null 2>&1
 }
 
 case "$case_name" in
@@ -96,7 +132,9 @@ case "$case_name" in
     grep -q "not C++" "$r" || fail "the compile log is not in results.json"
     ;;
   bugs-m*)
-    # Every deliberate bug loses the points of every checkpoint it names (and is graded on them).
+    # Every deliberate bug loses the points of every checkpoint it names (and is graded on them),
+    # or, where the only sign of it is a count the render measures about itself (no_clipping:
+    # writes outside the image), is shown there as advice (tools/grading/README.md).
     m=${case_name#bugs-}
     for bugfile in "$root/checkpoints/$m/bugs/"*.bug; do
       bug=$(basename "$bugfile" .bug)
@@ -116,7 +154,10 @@ case "$case_name" in
 import json, sys
 r = json.load(open(sys.argv[1])); bug = sys.argv[2]; names = sys.argv[3].split(',')
 tests = {t['name'].split(' ', 1)[1]: t for t in r['tests'] if ' ' in t['name']}
-bad = [n for n in names if n not in tests or tests[n]['score'] >= tests[n]['max_score']]
+# Seen either way: points lost, or (a bug seen only in what the render counts about itself,
+# e.g. writes outside the image) advice shown for no points.
+bad = [n for n in names if n not in tests or
+       (tests[n]['score'] >= tests[n]['max_score'] and 'advice (not graded' not in tests[n]['output'])]
 if bad:
     print(f"bug {bug} keeps the points of {bad}", file=sys.stderr); sys.exit(1)
 PY
@@ -125,7 +166,7 @@ PY
   hostile-*)
     attack=${case_name#hostile-}
     src=$here/hostile_submissions/$attack.cpp
-    sed -e "s|@SOURCE@|$root|g" -e "s|@GRADE@|$build/checkpoints/raster_grade|g" "$src" >"$work/lines.cpp"
+    sed -e "s|@SOURCE@|$root|g" -e "s|@GRADE@|$build/checkpoints/raster_grade|g" -e "s|@MARKER@|$marker|g" "$src" >"$work/lines.cpp"
     make_submission "$work/sub" "$work/lines.cpp"
     # Public scenes (seed 0): the expected images are exactly the committed ones the attacks go for.
     # Twice: as graded (the code check refuses what uses file, process or system-call functions),
@@ -147,7 +188,9 @@ PY
     ;;
   stray_reset)
     # The reference, but every line also writes outside the image and then hides it by
-    # assigning a fresh copy over the image (which resets Image::stray_writes()).
+    # assigning a fresh copy over the image (which resets Image::stray_writes()). The writes are
+    # still counted (the process-wide total), and shown as advice: a count only the render
+    # process measures costs no points in grading (the picture is right).
     sed 's/^void draw_line(Image& img, Vec2 a, Vec2 b, Color c) {/void real_draw_line(Image\& img, Vec2 a, Vec2 b, Color c) {/' \
       "$root/solutions/milestone1_lines/lines.cpp" >"$work/lines.cpp"
     grep -q real_draw_line "$work/lines.cpp" || fail "could not rename draw_line in the solution"
@@ -169,11 +212,12 @@ CPP
     bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
       --only m1.octant_1,m1.outcodes "$work/sub" >"$work/log" 2>&1 || { cat "$work/log"; fail "grading failed"; }
     r=$work/out/results.json
-    python3 - "$r" <<'PY' || fail "hidden stray writes were not caught"
+    python3 - "$r" <<'PY' || fail "hidden stray writes were not shown as advice"
 import json, sys
 t = {x['name']: x for x in json.load(open(sys.argv[1]))['tests']}
-assert t['m1 m1.octant_1']['score'] == 0, t['m1 m1.octant_1']
-assert 'outside the image' in t['m1 m1.octant_1']['output'], t['m1 m1.octant_1']['output']
+o = t['m1 m1.octant_1']['output']
+assert t['m1 m1.octant_1']['score'] == t['m1 m1.octant_1']['max_score'], t['m1 m1.octant_1']
+assert 'advice (not graded' in o and 'outside the image' in o.split('advice (not graded')[1], o
 assert t['m1 m1.outcodes']['score'] == t['m1 m1.outcodes']['max_score'], "a checkpoint without draw_line lost points"
 PY
     ;;
@@ -182,7 +226,8 @@ PY
     # (which would run after the artifacts are saved) rewrites values.txt to say "no stray
     # writes". As graded, the code check refuses the file access (the milestone scores 0, and
     # the log says why); without the code check, the render ends right after saving its
-    # artifacts (no destructor of the student's runs), and the stray writes are still found.
+    # artifacts (no destructor of the student's runs), and the stray writes are still found
+    # and shown as advice (no points: a count only the render process measures).
     sed 's/^void draw_line(Image& img, Vec2 a, Vec2 b, Color c) {/void real_draw_line(Image\& img, Vec2 a, Vec2 b, Color c) {/' \
       "$root/solutions/milestone1_lines/lines.cpp" >"$work/lines.cpp"
     grep -q real_draw_line "$work/lines.cpp" || fail "could not rename draw_line in the solution"
@@ -214,12 +259,12 @@ CPP
 import json, sys
 r = json.load(open(sys.argv[1]))
 t = {x['name']: x for x in r['tests']}
-assert t['m1 m1.octant_1']['score'] == 0, t['m1 m1.octant_1']
 if sys.argv[2] == 'with':
     assert r['score'] == 0, r['score']
     assert 'file access' in json.dumps(r), "the refusal does not say why"
 else:
-    assert 'outside the image' in t['m1 m1.octant_1']['output'], t['m1 m1.octant_1']['output']
+    o = t['m1 m1.octant_1']['output']
+    assert 'advice (not graded' in o and 'outside the image' in o.split('advice (not graded')[1], o
     assert t['m1 m1.outcodes']['score'] == t['m1 m1.outcodes']['max_score'], "a checkpoint without draw_line lost points"
 PY
     done
@@ -229,10 +274,11 @@ PY
     # program, one that leaves files and IPC objects behind, a zip bomb; graded without the code
     # check, so that only the sandbox and the folders' permissions stand in the way) keeps every
     # point; each attack scores 0 and still gets a grade.
+    chmod 1777 "$RASTER_GRADE_TMP"  # listable, as /tmp is: the classmates' folders can be seen
     mkdir "$work/class"
     make_submission "$work/ref"; (cd "$work/ref" && zip -qr "$work/class/alice.zip" .)
     for a in run_classmate leave_files; do
-      sed -e "s|@SOURCE@|$root|g" -e "s|@GRADE@|$build/checkpoints/raster_grade|g" "$here/hostile_submissions/$a.cpp" >"$work/$a.cpp"
+      sed -e "s|@SOURCE@|$root|g" -e "s|@GRADE@|$build/checkpoints/raster_grade|g" -e "s|@MARKER@|$marker|g" "$here/hostile_submissions/$a.cpp" >"$work/$a.cpp"
       make_submission "$work/class/mallory_$a" "$work/$a.cpp"
     done
     make_submission "$work/bomb"
@@ -253,6 +299,43 @@ PY
     grep -q "more than the grader unpacks" "$work/out/bomb.log" || fail "the zip bomb was not refused as a whole: $(cat "$work/out/bomb.log")"
     for who in alice bomb mallory_run_classmate mallory_leave_files; do [ -f "$work/out/$who/results.json" ] || fail "no grade for $who"; done
     for u in 1 2 3; do if pgrep -u "$((uid + u))" >/dev/null; then fail "processes of uid $((uid + u)) are left"; fi; done
+    ;;
+  isolation-*)
+    # Two submissions graded side by side in --batch with one mechanism: mallory's render (graded
+    # without the code check, so that only the sandbox and the folders' permissions stand in the
+    # way; tests/classmate_probe.cpp) leaves System V and POSIX IPC objects behind and tries to
+    # enter alice's folder beside its own. It sees it (without bubblewrap: the test's premise)
+    # but cannot enter it, scores 0, alice keeps every point, and no IPC object or file of
+    # either uid outlives the grade.
+    mode=${case_name#isolation-}
+    mode_works "$mode" || { echo "skipped: no $mode sandbox here"; exit 77; }
+    chmod 1777 "$RASTER_GRADE_TMP"  # listable, as /tmp is: the classmate's folder can be seen
+    mkdir "$work/class"
+    make_submission "$work/class/alice"
+    make_submission "$work/class/mallory" "$here/classmate_probe.cpp"
+    with_private_tree bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
+      --only m1.octant_1,m1.octant_3,m1.octant_5,m1.clip_one_edge --time 4 --watchdog 3 --no-code-check --mode "$mode" \
+      -j 2 --batch "$work/class" >"$work/log" 2>&1 || { cat "$work/log"; fail "batch grading failed"; }
+    python3 - "$work/out" "$mode" <<'PY' || { cat "$work/log" "$work/out/"*.log; fail "see above"; }
+import json, sys
+out, mode = sys.argv[1], sys.argv[2]
+alice = json.load(open(f"{out}/alice/results.json"))
+mallory = json.load(open(f"{out}/mallory/results.json"))
+assert alice["score"] == sum(t["max_score"] for t in alice["tests"]), f"alice lost points: {alice['score']}"
+assert mallory["score"] == 0, f"mallory scored {mallory['score']}"
+said = " ".join(t["output"] for t in mallory["tests"])
+assert "exited with status 43" not in said, "mallory entered alice's folder"
+assert "exited with status 4" in said, "mallory's probe did not run: " + said[:400]
+if mode != "bwrap":
+    assert "exited with status 42" in said, "mallory never saw alice's folder (the test proves nothing): " + said[:400]
+PY
+    for u in 0 1 2; do
+      if pgrep -u "$((uid + u))" >/dev/null; then fail "processes of uid $((uid + u)) are left"; fi
+      left=$(ipcs -m -q -s 2>/dev/null | awk -v u="$((uid + u))" '$3 == u' || true)
+      [ -z "$left" ] || fail "System V IPC objects of uid $((uid + u)) are left: $left"
+      left=$(find /tmp /var/tmp /dev/shm /run/lock /dev/mqueue -xdev -user "$((uid + u))" 2>/dev/null | head -n 3 || true)
+      [ -z "$left" ] || fail "files of uid $((uid + u)) are left: $left"
+    done
     ;;
   zip_bomb)
     # A zip whose lines.cpp unpacks to 300 MB: that entry is not even unpacked (a declared file
@@ -286,6 +369,59 @@ PY
     [ ! -e "$work/out/results.json" ] || fail "a full disk still wrote a results.json"
     [ -z "$(ls -A "$work/small/tmp")" ] || fail "the full disk kept the grader's files: $(ls -A "$work/small/tmp")"
     umount "$work/small"
+    # A render that fills its own working folder (--disk 40: a tmpfs of the submission's own)
+    # costs that submission only: the honest classmate graded beside it in a batch, on a disk of
+    # 160 MB that the render alone would fill, keeps every point, and both get a grade.
+    mount -t tmpfs -o size=160m,mode=0711 tmpfs "$work/small"
+    mkdir -m 711 "$work/small/tmp"
+    mkdir "$work/class"
+    make_submission "$work/class/alice"
+    make_submission "$work/class/mallory" "$here/fill_disk.cpp"
+    RASTER_GRADE_TMP=$work/small/tmp bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 \
+      --milestones m1 --only m1.octant_1,m1.octant_3,m1.clip_one_edge --disk 40 --no-code-check -j 2 \
+      --batch "$work/class" >"$work/log" 2>&1 || { cat "$work/log" "$work/out/"*.log; fail "batch grading failed beside a full folder"; }
+    python3 - "$work/out" <<'PY' || { cat "$work/log" "$work/out/"*.log; fail "see above"; }
+import json, sys
+alice = json.load(open(f"{sys.argv[1]}/alice/results.json"))
+mallory = json.load(open(f"{sys.argv[1]}/mallory/results.json"))
+assert alice["score"] == sum(t["max_score"] for t in alice["tests"]), f"alice lost points: {alice['score']}"
+assert mallory["score"] == 0, f"mallory scored {mallory['score']}"
+assert "refused" not in json.dumps(mallory), "mallory's render did not run (refused by the code check)"
+PY
+    grep -q "working folder 40 MiB" "$work/out/mallory.log" || fail "the working folder was not limited: $(head -n 3 "$work/out/mallory.log")"
+    [ -z "$(ls -A "$work/small/tmp")" ] || fail "files left: $(ls -A "$work/small/tmp")"
+    umount "$work/small"
+    ;;
+  side_by_side)
+    # Two grades of different submissions at once, each with its own --uid (as CTest runs these
+    # cases side by side): an attack whose render leaves children behind and writes into the
+    # shared world-writable folders (graded without the code check, so that its clean-up has
+    # something to sweep), and the reference. Neither's clean-up touches the other: the
+    # reference keeps every point, the attack scores 0, and both get a grade.
+    for a in outliving_children leave_files; do
+      sed -e "s|@MARKER@|$marker|g" "$here/hostile_submissions/$a.cpp" >"$work/$a.cpp"
+    done
+    make_submission "$work/attack" "$work/outliving_children.cpp" "" "" ""
+    make_submission "$work/attack2" "$work/leave_files.cpp"
+    make_submission "$work/honest"
+    pids=()
+    for who in attack:0 honest:2 attack2:3; do
+      sub=${who%:*} offset=${who#*:} flag=()
+      [ "$sub" = honest ] || flag=(--no-code-check)
+      bash "$grade" --no-build --build "$build" --uid "$((uid + offset))" --out "$work/out-$sub" --seed 1 --milestones m1 \
+        --only m1.octant_1,m1.octant_3,m1.clip_one_edge,m1.outcodes --time 3 --watchdog 2 "${flag[@]}" \
+        "$work/$sub" >"$work/log-$sub" 2>&1 &
+      pids+=($!)
+    done
+    for p in "${pids[@]}"; do wait "$p" || { cat "$work"/log-*; fail "a grade failed beside another"; }; done
+    r=$work/out-honest/results.json
+    [ "$(score "$r")" = "$(max_score "$r")" ] || { cat "$work/log-honest"; fail "the reference lost points beside the attacks"; }
+    for sub in attack attack2; do
+      [ "$(score "$work/out-$sub/results.json")" = 0 ] || { cat "$work/log-$sub"; fail "$sub scored beside the reference"; }
+    done
+    for u in 0 2 3; do
+      if pgrep -u "$((uid + u))" >/dev/null; then fail "processes of uid $((uid + u)) are left"; fi
+    done
     ;;
   two_at_once)
     # Two grades started at once with the same --uid: each takes its own sandbox uid (a lock per
@@ -300,7 +436,7 @@ PY
     for i in 1 2; do
       [ "$(score "$work/out$i/results.json")" = "$(max_score "$work/out$i/results.json")" ] || fail "grade $i lost points"
     done
-    u1=$(sed -n 's/.*, uid \([0-9]*\))$/\1/p' "$work/log1") u2=$(sed -n 's/.*, uid \([0-9]*\))$/\1/p' "$work/log2")
+    u1=$(sed -n 's/.*, uid \([0-9]*\), .*/\1/p' "$work/log1") u2=$(sed -n 's/.*, uid \([0-9]*\), .*/\1/p' "$work/log2")
     [ -n "$u1" ] && [ "$u1" != "$u2" ] || fail "both grades used uid $u1"
     if pgrep -u "$((uid + 1))" >/dev/null; then fail "processes of uid $((uid + 1)) are left"; fi
     ;;
@@ -419,3 +555,5 @@ CPP
 esac
 check_clean
 echo "ok: $case_name"
+exit
+}
