@@ -30,17 +30,11 @@
 
 #include <time.h>
 
+#include "harness/bench_build.h"
 #include "harness/checkpoint.h"
 #include "lines.h"
 #include "raster/image.h"
 #include "triangles.h"
-
-#ifndef RASTER_BUILD_TYPE
-#define RASTER_BUILD_TYPE "unknown"
-#endif
-#ifndef RASTER_BUILD_FLAGS
-#define RASTER_BUILD_FLAGS ""
-#endif
 
 namespace {
 

@@ -18,8 +18,14 @@ std::string todo_list(std::vector<int> todos) {
     for (std::size_t i = 0; i < todos.size();) {
         std::size_t j = i;
         while (j + 1 < todos.size() && todos[j + 1] == todos[j] + 1) ++j;
-        out += (out.empty() ? "" : ", ") + std::to_string(todos[i]);
-        if (j > i) out += "-" + std::to_string(todos[j]);
+        // (Appended piece by piece: GCC 12 at -O3 warns falsely (-Wrestrict) about
+        // `"literal" + std::to_string(...)`, an insert at the front of a temporary string.)
+        if (!out.empty()) out += ", ";
+        out += std::to_string(todos[i]);
+        if (j > i) {
+            out += '-';
+            out += std::to_string(todos[j]);
+        }
         i = j + 1;
     }
     return out;

@@ -26,15 +26,9 @@
 #include <time.h>
 
 #include "depth_lighting.h"
+#include "harness/bench_build.h"
 #include "harness/checkpoint.h"
 #include "m4/scenes.h"
-
-#ifndef RASTER_BUILD_TYPE
-#define RASTER_BUILD_TYPE "unknown"
-#endif
-#ifndef RASTER_BUILD_FLAGS
-#define RASTER_BUILD_FLAGS ""
-#endif
 
 namespace {
 

@@ -151,22 +151,41 @@ Mat4 normal_matrix(const Mat4& model) {
 
 // ---- TODO 5: lighting ----
 
+// BEGIN SOLUTION
+namespace {
+
+// L, the unit vector from the surface point toward the light.
+inline Vec3 toward_light(const Light& light, Vec3 position) {
+    return light.kind == Light::Kind::kDirectional ? unit_or_zero(-light.vector) : unit_or_zero(light.vector - position);
+}
+
+// shade()'s sum for a normal n already normalized (or zero). `directional`, when given, holds
+// L of each directional light (at its index in lighting.lights): that L is the same at every
+// surface point, so draw_mesh, lighting every position with the same lights, computes it once
+// per draw instead of once per position.
+inline Vec3 lit_levels(const Lighting& lighting, const Vec3* directional, Color base, Vec3 position, Vec3 n) {
+    Vec3 sum = lighting.ambient;
+    for (std::size_t k = 0; k < lighting.lights.size(); ++k) {
+        const Light& light = lighting.lights[k];
+        const bool known = directional && light.kind == Light::Kind::kDirectional;
+        const double lambert = raster::dot(n, known ? directional[k] : toward_light(light, position));
+        // A light that does not reach the surface adds nothing, even an infinite one (inf * 0
+        // would be NaN).
+        if (lambert > 0) sum = sum + light.intensity * lambert;
+    }
+    return {base.r * sum.x, base.g * sum.y, base.b * sum.z};
+}
+
+}  // namespace
+// END SOLUTION
+
 Vec3 shade(const Lighting& lighting, Color base, Vec3 position, Vec3 normal) {
     // TODO 5a: sum the ambient and every light's intensity * max(0, N . L) per channel, then
     // multiply by the base color. Mind the direction of L: from the surface TOWARD the light.
     Vec3 levels;
     // BEGIN SOLUTION
     const Vec3 n = unit_or_zero(normal);
-    Vec3 sum = lighting.ambient;
-    for (const Light& light : lighting.lights) {
-        const Vec3 l = light.kind == Light::Kind::kDirectional ? unit_or_zero(-light.vector)
-                                                               : unit_or_zero(light.vector - position);
-        const double lambert = raster::dot(n, l);
-        // A light that does not reach the surface adds nothing, even an infinite one (inf * 0
-        // would be NaN).
-        if (lambert > 0) sum = sum + light.intensity * lambert;
-    }
-    levels = {base.r * sum.x, base.g * sum.y, base.b * sum.z};
+    levels = lit_levels(lighting, nullptr, base, position, n);
     // END SOLUTION
     return levels;
 }
@@ -299,33 +318,24 @@ int attribute_count(const FillState& s) {
     }
 }
 
-}  // namespace
-// END SOLUTION
-
-void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const FillState& state, Stats& stats) {
-    // TODO 8: milestone 2's fill_triangle_gradient, extended: snap, orient (swapping the whole
-    // vertex), bounding box, and per covered pixel center the weights, the depth test, the
-    // color of the mode and the writes. Advice: step the three integer edge values from pixel
-    // to pixel instead of recomputing them (an addition each).
-    // BEGIN SOLUTION
+// fill_triangle once the vertices are snapped: f[i] is m2::snap of v[i]'s screen x and y.
+// draw_mesh snaps every position once and calls this directly (a position is shared by about
+// six triangles); fill_triangle snaps its three vertices first.
+void fill_snapped(Frame& frame, std::array<const ScreenVertex*, 3> v, std::array<m2::Fixed, 3> f,
+                  const FillState& state, Stats& stats) {
     Image& img = frame.color;
-    m2::Fixed f[3];
-    for (int i = 0; i < 3; ++i) {
-        if (!m2::snap({v[i].screen.x, v[i].screen.y}, f[i])) return;
-    }
     std::int64_t area2 = m2::edge(f[0], f[1], f[2]);
     if (area2 == 0) return;
     // Orient counter-clockwise on the screen's y-down axes (positive area), keeping the
-    // vertex order of the attributes in step with the snapped points.
-    int order[3] = {0, 1, 2};
+    // vertices in step with their snapped points.
     if (area2 < 0) {
         std::swap(f[1], f[2]);
-        std::swap(order[1], order[2]);
+        std::swap(v[1], v[2]);
         area2 = -area2;
     }
-    const ScreenVertex& a0 = v[order[0]];
-    const ScreenVertex& a1 = v[order[1]];
-    const ScreenVertex& a2 = v[order[2]];
+    const ScreenVertex& a0 = *v[0];
+    const ScreenVertex& a1 = *v[1];
+    const ScreenVertex& a2 = *v[2];
     const m2::PixelRect box = m2::bounding_box(f[0], f[1], f[2], img.width(), img.height());
     if (box.x0 >= box.x1 || box.y0 >= box.y1) return;
 
@@ -335,7 +345,7 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
     std::int64_t step_x[3], step_y[3], row[3], bias[3];
     const m2::Fixed start{std::int64_t(box.x0) * S + S / 2, std::int64_t(box.y0) * S + S / 2};
     for (int i = 0; i < 3; ++i) {
-        const m2::Fixed a = f[i], b = f[(i + 1) % 3];
+        const m2::Fixed a = f[i], b = f[i == 2 ? 0 : i + 1];
         const bool top_left = (b.y == a.y && b.x > a.x) || b.y < a.y;
         bias[i] = top_left ? 0 : 1;
         step_x[i] = -(b.y - a.y) * S;
@@ -425,6 +435,22 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
     stats.depth_tests += tests;
     stats.depth_writes += writes;
     stats.interpolated += shaded;
+}
+
+}  // namespace
+// END SOLUTION
+
+void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const FillState& state, Stats& stats) {
+    // TODO 8: milestone 2's fill_triangle_gradient, extended: snap, orient (swapping the whole
+    // vertex), bounding box, and per covered pixel center the weights, the depth test, the
+    // color of the mode and the writes. Advice: step the three integer edge values from pixel
+    // to pixel instead of recomputing them (an addition each).
+    // BEGIN SOLUTION
+    std::array<m2::Fixed, 3> f;
+    for (int i = 0; i < 3; ++i) {
+        if (!m2::snap({v[i].screen.x, v[i].screen.y}, f[i])) return;
+    }
+    fill_snapped(frame, {&v[0], &v[1], &v[2]}, f, state, stats);
     // END SOLUTION
 }
 
@@ -433,38 +459,30 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
 // BEGIN SOLUTION
 namespace {
 
-// m3's Mat4 * Vec4 (the same sums in the same order, so the same bits), inline for the loop
-// over positions, where a call per product would cost as much as the product.
+// m3's Mat4 * Vec4 (the same sums in the same order, starting from 0, so the same bits),
+// inline and written out for the loop over positions, where a call or a loop per product
+// would cost as much as the product.
 inline Vec4 times(const Mat4& a, Vec4 v) {
-    const double in[4] = {v.x, v.y, v.z, v.w};
-    double out[4] = {};
-    for (int r = 0; r < 4; ++r) {
-        for (int c = 0; c < 4; ++c) out[r] += a.m[r][c] * in[c];
-    }
-    return {out[0], out[1], out[2], out[3]};
+    auto row = [&](const double (&m)[4]) { return 0.0 + m[0] * v.x + m[1] * v.y + m[2] * v.z + m[3] * v.w; };
+    return {row(a.m[0]), row(a.m[1]), row(a.m[2]), row(a.m[3])};
 }
 
-// Where a position lies after step 1.
-enum class Where : unsigned char { kInside, kOutside, kNotFinite };
+// Where a position lies after step 1. kInside: in the view volume, with its screen position
+// snapped. kInsideUnsnapped: in the view volume but with no screen position: the origin of
+// clip space, (0, 0, 0, 0), lies on all six planes and x / w is NaN there; a triangle using
+// it is counted (culled or drawn) like any other and fills nothing.
+enum class Where : unsigned char { kInside, kInsideUnsnapped, kOutside, kNotFinite };
 
-// Step 1's results, one array per quantity, filled only with what the mode reads. They live
-// from call to call (one set per thread): a renderer draws the same mesh frame after frame,
-// and reusing the arrays spares it allocating, and the system zeroing, megabytes per frame.
+// Step 1's results, one entry per position: the ScreenVertex the fill reads (only the
+// attributes this mode reads are set; the screen position only for a position inside) and
+// its snapped screen point. They live from call to call (one set per thread): a renderer
+// draws the same mesh frame after frame, and reusing the arrays spares it allocating, and the
+// system zeroing, megabytes per frame.
 struct PerPosition {
     std::vector<Where> where;
-    std::vector<Vec3> screen;  // m3::to_screen of the inside positions
-    std::vector<double> w;     // clip-space w
-    std::vector<Vec3> color, normal, world;
+    std::vector<m2::Fixed> snapped;
+    std::vector<ScreenVertex> vertex;
 };
-
-// True when no pixel center can be inside the triangle: its bounding box, widened by the
-// largest move snapping makes, holds none (milestone 2's box would then be empty).
-inline bool misses_every_center(Vec3 a, Vec3 b, Vec3 c) {
-    constexpr double slack = 1.0 / m2::kSubpixelSteps;
-    const double x0 = std::min({a.x, b.x, c.x}) - slack, x1 = std::max({a.x, b.x, c.x}) + slack;
-    const double y0 = std::min({a.y, b.y, c.y}) - slack, y1 = std::max({a.y, b.y, c.y}) + slack;
-    return std::floor(x1 - 0.5) < std::ceil(x0 - 0.5) || std::floor(y1 - 0.5) < std::ceil(y0 - 0.5);
-}
 
 PerPosition& per_position_arrays() {
     thread_local PerPosition arrays;
@@ -489,7 +507,6 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
     // per position for kGouraud and kVertexColor.
     const bool want_normals = mode == Shading::kGouraud || mode == Shading::kPerPixel || mode == Shading::kNormalView;
     const bool want_world = mode == Shading::kFlat || (point_light && (mode == Shading::kGouraud || mode == Shading::kPerPixel));
-    const bool want_color = mode == Shading::kGouraud || mode == Shading::kVertexColor;
     const bool want_uv = mode == Shading::kChecker;
 
     const Mat4 mvp = projection * (view * model);
@@ -501,38 +518,42 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
         stats.vertex_normals += n;
         model_normals = &computed_normals;
     }
+    // L of every directional light, once for all positions (lit_levels()).
+    std::vector<Vec3> directional(lighting.lights.size());
+    for (std::size_t k = 0; k < directional.size(); ++k) directional[k] = toward_light(lighting.lights[k], {});
 
-    // Step 1: every position once.
+    // Step 1: every position once, to the vertex the fill reads, snapped once here rather than
+    // once per triangle that uses it.
     PerPosition& pp = per_position_arrays();
     pp.where.resize(n);
-    pp.screen.resize(n);
-    pp.w.resize(n);
-    pp.color.resize(want_color ? n : 0);
-    pp.normal.resize(want_normals ? n : 0);
-    pp.world.resize(want_world ? n : 0);
+    pp.snapped.resize(n);
+    pp.vertex.resize(n);
     const int width = frame.color.width(), height = frame.color.height();
     auto clip_of = [&](int i) { return times(mvp, raster::point(mesh.positions[i])); };
     for (int i = 0; i < n; ++i) {
         const Vec3 p = mesh.positions[i];
         const Vec4 c = clip_of(i);
-        pp.w[i] = c.w;
+        ScreenVertex& v = pp.vertex[i];
+        v = {};
+        v.w = c.w;
         if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
             pp.where[i] = Where::kNotFinite;
         } else if (inside(c)) {
-            pp.where[i] = Where::kInside;
-            pp.screen[i] = m3::to_screen(c, width, height);
+            v.screen = m3::to_screen(c, width, height);
+            pp.where[i] = m2::snap({v.screen.x, v.screen.y}, pp.snapped[i]) ? Where::kInside : Where::kInsideUnsnapped;
         } else {
             pp.where[i] = Where::kOutside;
         }
-        if (want_world) pp.world[i] = raster::xyz(times(model, raster::point(p)));
+        if (want_world) v.world = raster::xyz(times(model, raster::point(p)));
         if (want_normals) {
-            pp.normal[i] = unit_or_zero(raster::xyz(times(to_world_normal, raster::direction((*model_normals)[i]))));
+            v.normal = unit_or_zero(raster::xyz(times(to_world_normal, raster::direction((*model_normals)[i]))));
         }
+        if (want_uv && i < static_cast<int>(mesh.uvs.size())) v.uv = mesh.uvs[i];
         if (mode == Shading::kVertexColor) {
             const Color vc = i < static_cast<int>(mesh.vertex_colors.size()) ? mesh.vertex_colors[i] : Color{0, 0, 0};
-            pp.color[i] = {double(vc.r), double(vc.g), double(vc.b)};
+            v.color = {double(vc.r), double(vc.g), double(vc.b)};
         } else if (mode == Shading::kGouraud) {
-            pp.color[i] = shade(lighting, material, want_world ? pp.world[i] : Vec3{}, pp.normal[i]);
+            v.color = lit_levels(lighting, directional.data(), material, v.world, v.normal);  // shade()
             ++stats.shade_calls;
         }
     }
@@ -543,36 +564,15 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
     state.lighting = &lighting;
     state.material = material;
     state.point_light = point_light;
-    // A position as a ClipVertex or a ScreenVertex with only the attributes this mode reads.
-    auto clip_vertex = [&](int i) {
-        ClipVertex v;
-        v.clip = clip_of(i);
-        if (want_color) v.color = pp.color[i];
-        if (want_normals) v.normal = pp.normal[i];
-        if (want_world) v.world = pp.world[i];
-        if (want_uv && i < static_cast<int>(mesh.uvs.size())) v.uv = mesh.uvs[i];
-        return v;
-    };
-    auto screen_vertex = [&](int i) {
-        ScreenVertex v;
-        v.screen = pp.screen[i];
-        v.w = pp.w[i];
-        if (want_color) v.color = pp.color[i];
-        if (want_normals) v.normal = pp.normal[i];
-        if (want_world) v.world = pp.world[i];
-        if (want_uv && i < static_cast<int>(mesh.uvs.size())) v.uv = mesh.uvs[i];
-        return v;
-    };
-
     for (std::size_t face = 0; face < mesh.triangles.size(); ++face) {
         const auto& t = mesh.triangles[face];
         if (t[0] < 0 || t[0] >= n || t[1] < 0 || t[1] >= n || t[2] < 0 || t[2] >= n) continue;
         const Where w0 = pp.where[t[0]], w1 = pp.where[t[1]], w2 = pp.where[t[2]];
         if (w0 == Where::kNotFinite || w1 == Where::kNotFinite || w2 == Where::kNotFinite) continue;
         bool colored = false;
-        // One triangle of the fan, from its screen positions and a function that makes its
-        // three vertices: cull it, or color it (the first time) and fill it.
-        auto draw = [&](Vec3 s0, Vec3 s1, Vec3 s2, auto&& make_vertices) {
+        // One triangle of the fan, from its screen positions and a function that fills it:
+        // cull it, or color it (the first time) and fill it.
+        auto draw = [&](Vec3 s0, Vec3 s1, Vec3 s2, auto&& fill) {
             if (needs.cull && m3::is_back_facing(s0, s1, s2)) {
                 ++stats.triangles_culled;
                 return;
@@ -582,24 +582,27 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
                 if (mode == Shading::kFaceColor) {
                     state.flat_color = face < mesh.face_colors.size() ? mesh.face_colors[face] : raster::colors::white;
                 } else if (mode == Shading::kFlat) {
-                    const Vec3 p0 = pp.world[t[0]], p1 = pp.world[t[1]], p2 = pp.world[t[2]];
+                    const Vec3 p0 = pp.vertex[t[0]].world, p1 = pp.vertex[t[1]].world, p2 = pp.vertex[t[2]].world;
                     ++stats.shade_calls;
                     state.flat_color = color_of(shade(lighting, material, (p0 + p1 + p2) / 3, face_normal(p0, p1, p2)));
                 }
             }
             ++stats.triangles_drawn;
-            // On a dense mesh most triangles cover no pixel center at all; when the bounding
-            // box (widened by the snapping step) holds none, the fill would find nothing.
-            if (misses_every_center(s0, s1, s2)) return;
-            fill_triangle(frame, make_vertices(), state, stats);
+            fill();
         };
-        if (w0 == Where::kInside && w1 == Where::kInside && w2 == Where::kInside) {
-            draw(pp.screen[t[0]], pp.screen[t[1]], pp.screen[t[2]], [&] {
-                return std::array<ScreenVertex, 3>{screen_vertex(t[0]), screen_vertex(t[1]), screen_vertex(t[2])};
+        if (w0 != Where::kOutside && w1 != Where::kOutside && w2 != Where::kOutside) {
+            const ScreenVertex &v0 = pp.vertex[t[0]], &v1 = pp.vertex[t[1]], &v2 = pp.vertex[t[2]];
+            draw(v0.screen, v1.screen, v2.screen, [&] {
+                if (w0 != Where::kInside || w1 != Where::kInside || w2 != Where::kInside) return;
+                fill_snapped(frame, {&v0, &v1, &v2}, {pp.snapped[t[0]], pp.snapped[t[1]], pp.snapped[t[2]]}, state, stats);
             });
             continue;
         }
         ++stats.triangles_clipped;
+        auto clip_vertex = [&](int i) {
+            const ScreenVertex& v = pp.vertex[i];
+            return ClipVertex{clip_of(i), v.color, v.normal, v.world, v.uv};
+        };
         const std::vector<ClipVertex> poly = clip_triangle({clip_vertex(t[0]), clip_vertex(t[1]), clip_vertex(t[2])});
         auto to_screen_vertex = [&](const ClipVertex& c) {
             return ScreenVertex{m3::to_screen(c.clip, width, height), c.clip.w, c.color, c.normal, c.world, c.uv};
@@ -607,7 +610,7 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
         for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
             const std::array<ScreenVertex, 3> sv = {to_screen_vertex(poly[0]), to_screen_vertex(poly[i]),
                                                     to_screen_vertex(poly[i + 1])};
-            draw(sv[0].screen, sv[1].screen, sv[2].screen, [&] { return sv; });
+            draw(sv[0].screen, sv[1].screen, sv[2].screen, [&] { fill_triangle(frame, sv, state, stats); });
         }
     }
     // END SOLUTION
