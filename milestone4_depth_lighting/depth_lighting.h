@@ -305,7 +305,10 @@ struct Mesh {
 //    coordinate): clip_triangle unless all three vertices are inside; kFlat lights the
 //    triangle once, when its first fan triangle is drawn; fan (0, i, i + 1); each fan
 //    triangle to the screen (m3::to_screen), culled if needs.cull and back-facing, else
-//    fill_triangle.
+//    fill_triangle. The fan is the reference's choice: any triangulation of the convex
+//    polygon into n - 2 triangles of its own vertices (a fan from another vertex, a strip) is
+//    as right. It covers the same pixels, kFlat's one color is the mesh triangle's, and the
+//    checkpoints judge nothing else it could change (as for clip_triangle's start vertex).
 Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& view, const Mat4& projection,
                 const Lighting& lighting, Color material, const Needs& needs);
 
