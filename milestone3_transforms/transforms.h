@@ -161,7 +161,7 @@ Vec3 to_screen(Vec4 clip, int width, int height);
 // times). Empty (or fewer than 3 vertices) when nothing is inside. Any order of the planes;
 // any start vertex. The caller cuts the result into n - 2 triangles of its own vertices: the
 // reference fans it, (0, i, i + 1); any other triangulation (a fan from another vertex, a strip)
-// covers the same pixels, and the start vertex is free anyway.
+// covers the same pixels but for rounding at the edges, and the start vertex is free anyway.
 // Huge coordinates: a plane distance such as w + x overflows to infinity for coordinates near
 // 1e308, and infinity / infinity makes NaN vertices. When some |coordinate| exceeds 2^500, the
 // reference scales every vertex by the same power of two first (exact, and the same points in
