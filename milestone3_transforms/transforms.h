@@ -156,8 +156,12 @@ Vec3 to_screen(Vec4 clip, int width, int height);
 // TODO 7a: Sutherland-Hodgman: the part of the convex polygon `poly` (vertices in order)
 // inside all six planes, as a polygon in the same orientation. A new vertex on the edge from
 // a to b, where the signed distances to the plane are da >= 0 > db (for the plane x <= w,
-// d = w - x), is a + (b - a) * da / (da - db). Empty (or fewer than 3 vertices) when nothing
-// is inside. The caller fans the result into triangles: (0, i, i + 1).
+// d = w - x), is a + (b - a) * da / (da - db). A vertex on a plane (d = 0) is inside it (the
+// planes are closed: a triangle touching the volume at one vertex gives that point, three
+// times). Empty (or fewer than 3 vertices) when nothing is inside. Any order of the planes;
+// any start vertex. The caller cuts the result into n - 2 triangles of its own vertices: the
+// reference fans it, (0, i, i + 1); any other triangulation (a fan from another vertex, a strip)
+// covers the same pixels but for rounding at the edges, and the start vertex is free anyway.
 // Huge coordinates: a plane distance such as w + x overflows to infinity for coordinates near
 // 1e308, and infinity / infinity makes NaN vertices. When some |coordinate| exceeds 2^500, the
 // reference scales every vertex by the same power of two first (exact, and the same points in

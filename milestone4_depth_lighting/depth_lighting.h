@@ -215,13 +215,15 @@ struct ClipVertex {
 // a + (b - a) * t for the position AND every attribute.
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t);
 // Milestone 3's clip_polygon for a triangle whose vertices carry attributes: the part inside
-// the six planes -w <= x, y, z <= w, as a polygon in the same orientation (fan it from vertex
-// 0). A vertex on a plane (d = 0) is inside it. A new vertex where the edge a-b leaves a plane
-// (da >= 0 > db) is lerp(a, b, da / (da - db)), or lerp(b, a, db / (db - da)) when a is the
-// outside end (interpolating from the inside end gives two triangles sharing an edge the very
-// same new vertex). Then every vertex whose w
-// is not > 0 is dropped: exactly, a vertex inside has w >= near > 0, but rounding between two
-// huge vertices can cancel every digit and leave (0, 0, 0, 0), which lies on all six planes.
+// the six planes -w <= x, y, z <= w, as a polygon in the same orientation (the reference fans
+// it from vertex 0). A vertex on a plane (d = 0) is inside it (the planes are closed; where its
+// neighbour is outside, the new vertex on the edge between them is that same point, so the
+// polygon holds it twice, and the checkpoints count it). A new vertex where the edge a-b
+// leaves a plane (da >= 0 > db) is lerp(a, b, da / (da - db)), or lerp(b, a, db / (db - da))
+// when a is the outside end (interpolating from the inside end gives two triangles sharing an
+// edge the very same new vertex). Then every vertex whose w is not > 0 is dropped: exactly, a
+// vertex inside has w >= near > 0, but rounding between two huge vertices can cancel every
+// digit and leave (0, 0, 0, 0), which lies on all six planes.
 // Empty when fewer than 3 vertices remain. Any order of the planes; any start vertex.
 std::vector<ClipVertex> clip_triangle(const std::array<ClipVertex, 3>& triangle);
 
@@ -305,7 +307,11 @@ struct Mesh {
 //    coordinate): clip_triangle unless all three vertices are inside; kFlat lights the
 //    triangle once, when its first fan triangle is drawn; fan (0, i, i + 1); each fan
 //    triangle to the screen (m3::to_screen), culled if needs.cull and back-facing, else
-//    fill_triangle.
+//    fill_triangle. The fan is the reference's choice: any triangulation of the convex
+//    polygon into n - 2 triangles of its own vertices (a fan from another vertex, a strip) is
+//    as right. It covers the same pixels but for rounding at the edges, kFlat's one color is
+//    the mesh triangle's, and the checkpoints judge nothing else it could change (as for
+//    clip_triangle's start vertex, which moves the fan's apex).
 Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& view, const Mat4& projection,
                 const Lighting& lighting, Color material, const Needs& needs);
 

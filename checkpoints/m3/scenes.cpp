@@ -413,6 +413,9 @@ static std::vector<std::array<Vec4, 3>> public_clip_cases() {
         {{{0.03, -0.02, -0.35, 0.2}, {-3.1e5, -2.3e5, 9.99e5, 1e6}, {2.9e5, 1.7e5, 9.99e5, 1e6}}},
         // entirely outside (beyond the left plane): nothing
         {{{-2.1, 0.1, 0.0, 1}, {-3.0, 0.5, 0.2, 1}, {-1.6, -0.4, 0.1, 1.1}}},
+        // beyond the right plane but for one vertex ON it (x = w): the planes are closed, so that
+        // point is inside, and the rule keeps it (three times: a polygon of no area)
+        {{{1.0, 0.2, 0.1, 1}, {2.0, 0.5, 0.0, 1}, {1.8, -0.4, 0.2, 1}}},
     };
 }
 

@@ -350,7 +350,27 @@ void judge_group(Group g, Ctx& c) {
                 }
                 const std::string what = "clip_triangle case " + std::to_string(i) + " (clip positions " + inputs + ")";
                 if (n != rn) {
-                    c.add("clipping", "TODO 7b: " + what + " gave " + std::to_string(n) + " vertices, expected " + std::to_string(rn));
+                    // A vertex inside the closed volume and exactly on one of its planes: the
+                    // header's rule keeps it (d >= 0), which a strict test (d > 0) does not.
+                    std::string touching;
+                    for (const Vec4& q : cases[i].clip) {
+                        const double d[6] = {q.w + q.x, q.w - q.x, q.w + q.y, q.w - q.y, q.w + q.z, q.w - q.z};
+                        if (touching.empty() && std::all_of(d, d + 6, [](double x) { return x >= 0; }) &&
+                            std::any_of(d, d + 6, [](double x) { return x == 0; })) {
+                            touching = "(" + num(q.x) + ", " + num(q.y) + ", " + num(q.z) + ", " + num(q.w) + ")";
+                        }
+                    }
+                    if (!touching.empty()) {
+                        c.add("inside test", "TODO 7b: " + what + " gave " + std::to_string(n) + " vertices, expected " +
+                                                 std::to_string(rn) + ". The vertex " + touching +
+                                                 " lies exactly on a plane (d = 0), and a vertex on a plane is INSIDE it: "
+                                                 "keep a when da >= 0 (not da > 0) and add a new vertex when (da >= 0) != "
+                                                 "(db >= 0). The edge between it and an outside neighbour then adds a new "
+                                                 "vertex at the very same point, which the count includes");
+                    } else {
+                        c.add("clipping", "TODO 7b: " + what + " gave " + std::to_string(n) + " vertices, expected " +
+                                              std::to_string(rn));
+                    }
                     continue;
                 }
                 // The same polygon, possibly starting at another vertex (the plane order is free).

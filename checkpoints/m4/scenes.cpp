@@ -595,6 +595,11 @@ std::vector<ClipCase> clip_cases() {
          {{{0.1, 0.2}, {0.9, 0.3}, {0.4, 0.8}}}},
         // entirely outside (left)
         {{{{-3, 0, 0, 1}, {-2, 0.5, 0, 1}, {-2.5, -0.5, 0, 1}}}, {{{1, 2, 3}, {4, 5, 6}, {7, 8, 9}}}, {{{0, 0}, {1, 0}, {0, 1}}}},
+        // one vertex ON the right plane (x = w), one inside, one outside: a vertex on a plane is
+        // inside it, so it stays, and the edge between it and the outside vertex adds a new
+        // vertex at the very same point (4 vertices, the first and the last equal)
+        {{{{1, 0.2, 0.1, 1}, {0.2, -0.3, 0.2, 1}, {1.8, 0.6, 0, 1}}}, {{{255, 0, 0}, {0, 255, 0}, {0, 0, 255}}},
+         {{{0, 0}, {1, 0}, {0, 1}}}},
     };
     if (current_seed != 0) {
         // Each vertex times its own positive factor: the same point of projective space.

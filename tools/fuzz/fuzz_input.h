@@ -11,6 +11,7 @@
 //    input that ever found a bug replays in the test suite (and under CI's sanitizer build).
 #pragma once
 
+#include <array>
 #include <bit>
 #include <ctime>
 #include <cfloat>
@@ -21,6 +22,7 @@
 #include <cstdlib>
 #include <limits>
 #include <tuple>
+#include <vector>
 
 #include "raster/color.h"
 #include "raster/image.h"
@@ -136,6 +138,44 @@ inline raster::Image image(Input& in) {
     raster::Image img(width, height, in.color());
     img.limit_stray_writes(1000);
     return img;
+}
+
+// The scene pieces milestones 3 and 4 decode alike (fuzz_m3.cpp, fuzz_m4.cpp). Each reads its
+// values in the order the harnesses always did, so saved inputs decode as before.
+
+// n model positions, about one in five exactly at `eye` (w = 0 in clip space for a camera
+// there), the others anywhere.
+inline std::vector<raster::Vec3> positions(Input& in, int n, raster::Vec3 eye) {
+    std::vector<raster::Vec3> out;
+    for (int i = 0; i < n; ++i) out.push_back(in.byte() < 48 ? eye : in.vec3());
+    return out;
+}
+
+// 0 to 8 triangles over n positions, with out-of-range indices (-1 and n) among them.
+inline std::vector<std::array<int, 3>> triangles(Input& in, int n) {
+    const int count = in.range(0, 8);
+    std::vector<std::array<int, 3>> out;
+    for (int i = 0; i < count; ++i) out.push_back({in.range(-1, n), in.range(-1, n), in.range(-1, n)});
+    return out;
+}
+
+// A matrix of sixteen moderate (sometimes extreme) entries: m3::Mat4 and m4's alike.
+template <class Matrix>
+Matrix raw_matrix(Input& in) {
+    Matrix m;
+    for (auto& row : m.m) {
+        for (double& e : row) e = in.mild();
+    }
+    return m;
+}
+
+// The arguments of m3::perspective (fovy, aspect, near, far) and m3::orthographic (left, right,
+// bottom, top, near, far), for std::apply: a braced list is read left to right.
+inline std::tuple<double, double, double, double> perspective_args(Input& in) {
+    return {in.mild() * 16, in.mild(), in.real(), in.real()};
+}
+inline std::tuple<double, double, double, double, double, double> orthographic_args(Input& in) {
+    return {in.real(), in.real(), in.real(), in.real(), in.real(), in.real()};
 }
 
 // Fails the input with a message (a broken promise of a header).

@@ -41,19 +41,13 @@ Mat4 matrix(fuzz::Input& in) {
         case 2: return m3::scale(in.mild3());
         case 3: return std::apply(m3::rotate, std::tuple{in.mild3(), in.mild()});
         case 4: return std::apply(m3::look_at, std::tuple{in.vec3(), in.vec3(), in.mild3()});
-        case 5: return std::apply(m3::perspective, std::tuple{in.mild() * 16, in.mild(), in.real(), in.real()});
-        case 6: return std::apply(m3::orthographic, std::tuple{in.real(), in.real(), in.real(), in.real(), in.real(), in.real()});
+        case 5: return std::apply(m3::perspective, fuzz::perspective_args(in));
+        case 6: return std::apply(m3::orthographic, fuzz::orthographic_args(in));
         case 7: {
             const Mat4 y = m3::rotate_y(in.mild());
             return y * m3::rotate_x(in.mild());
         }
-        default: {
-            Mat4 m;
-            for (auto& row : m.m) {
-                for (double& e : row) e = in.mild();
-            }
-            return m;
-        }
+        default: return fuzz::raw_matrix<Mat4>(in);
     }
 }
 
@@ -62,15 +56,11 @@ void draw(fuzz::Input& in) {
     m3::Model model;
     const int n = in.range(0, 9);
     const Vec3 eye = in.vec3();
-    for (int i = 0; i < n; ++i) {
-        // Some vertices exactly at the eye (w = 0 in clip space), the rest anywhere.
-        model.positions.push_back(in.byte() < 48 ? eye : in.vec3());
-    }
-    const int triangles = in.range(0, 8);
-    for (int i = 0; i < triangles; ++i) model.triangles.push_back({in.range(-1, n), in.range(-1, n), in.range(-1, n)});
+    model.positions = fuzz::positions(in, n, eye);
+    model.triangles = fuzz::triangles(in, n);
     const int edges = in.range(0, 6);
     for (int i = 0; i < edges; ++i) model.edges.push_back({in.range(-1, n), in.range(-1, n)});
-    const int colors = in.range(0, triangles);
+    const int colors = in.range(0, static_cast<int>(model.triangles.size()));
     for (int i = 0; i < colors; ++i) model.face_colors.push_back(in.color());
     const Mat4 model_matrix = in.flag() ? m3::identity() : matrix(in);
     const Mat4 view = in.flag() ? m3::look_at(eye, in.vec3(), {0, 1, 0}) : matrix(in);  // one read each
@@ -117,9 +107,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             break;
         }
         case 2: {
-            if (!finite(std::apply(m3::perspective, std::tuple{in.mild() * 16, in.mild(), in.real(), in.real()})))
+            if (!finite(std::apply(m3::perspective, fuzz::perspective_args(in))))
                 fuzz::broken("m3::perspective holds an entry that is not finite");
-            if (!finite(std::apply(m3::orthographic, std::tuple{in.real(), in.real(), in.real(), in.real(), in.real(), in.real()})))
+            if (!finite(std::apply(m3::orthographic, fuzz::orthographic_args(in))))
                 fuzz::broken("m3::orthographic holds an entry that is not finite");
             (void)std::apply(m3::rotate, std::tuple{in.vec3(), in.real()});
             (void)m3::rotate_x(in.real());

@@ -52,12 +52,12 @@ m4::Needs needs(fuzz::Input& in) {
 Mat4 projection(fuzz::Input& in) {
     switch (in.byte() % 4) {
         case 0: return m3::perspective(60, 1, 0.1, 100);
-        case 1: return std::apply(m3::perspective, std::tuple{in.mild() * 16, in.mild(), in.real(), in.real()});
+        case 1: return std::apply(m3::perspective, fuzz::perspective_args(in));
         case 2: {
             const double near = std::numeric_limits<double>::denorm_min() * in.range(1, 1000);
             return m3::perspective(90, 1, near, in.mild());
         }
-        default: return std::apply(m3::orthographic, std::tuple{in.real(), in.real(), in.real(), in.real(), in.real(), in.real()});
+        default: return std::apply(m3::orthographic, fuzz::orthographic_args(in));
     }
 }
 
@@ -69,13 +69,7 @@ Mat4 matrix(fuzz::Input& in) {
             return t * std::apply(m3::rotate, std::tuple{in.mild3(), in.mild()});
         }
         case 2: return m3::scale(in.mild3());
-        default: {
-            Mat4 m;
-            for (auto& row : m.m) {
-                for (double& e : row) e = in.mild();
-            }
-            return m;
-        }
+        default: return fuzz::raw_matrix<Mat4>(in);
     }
 }
 
@@ -87,9 +81,9 @@ void draw(fuzz::Input& in) {
     m4::Mesh mesh;
     const int n = in.range(0, 9);
     const Vec3 eye = in.flag() ? Vec3{} : in.vec3();
-    for (int i = 0; i < n; ++i) mesh.positions.push_back(in.byte() < 48 ? eye : in.vec3());
-    const int triangles = in.range(0, 8);
-    for (int i = 0; i < triangles; ++i) mesh.triangles.push_back({in.range(-1, n), in.range(-1, n), in.range(-1, n)});
+    mesh.positions = fuzz::positions(in, n, eye);
+    mesh.triangles = fuzz::triangles(in, n);
+    const int triangles = static_cast<int>(mesh.triangles.size());
     const std::uint8_t arrays = in.byte();
     if (arrays & 1) {
         for (int i = 0, k = in.range(0, triangles); i < k; ++i) mesh.face_colors.push_back(in.color());
