@@ -717,7 +717,10 @@ std::optional<cp::Finding> fill_triangle_fails(const cp::Artifacts& art, const c
     // The finding that names an idea (perspective weights, depth keys, the test order) before
     // a count, and a count before "the picture differs".
     auto rank = [](const cp::Finding& f) {
-        if (f.topic == "perspective" || f.topic == "depth key") return 0;
+        if (f.topic == "perspective" || f.topic == "depth key" ||
+            f.message.find("failed the depth test") != std::string::npos) {
+            return 0;
+        }
         return f.message.rfind("the picture differs", 0) == 0 ? 2 : 1;
     };
     const cp::Finding* best = &scratch.findings.front();
@@ -874,7 +877,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             const auto [x, y] = panel.depth_probes[k];
             double d = std::nan("");
             if (panel.format == Format::kFloatZ && b >= 0 && b < 4294967296.0) d = std::bit_cast<float>(static_cast<std::uint32_t>(b));
-            c.add("depth key", "TODO 8: the depth buffer at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+            // A key written by a rejected fragment is the depth test's order (test, then write).
+            c.add(overwritten ? "depth test" : "depth key", "TODO 8: the depth buffer at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
                                    ")" + where + " holds key " + num(a) + ", expected " + num(b) +
                                    (std::isnan(d) ? "" : " (d = " + num(d) + ")") +
                                    (overwritten ? ", a FARTHER key, as at every probe that differs: a hidden "
