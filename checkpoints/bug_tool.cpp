@@ -260,6 +260,7 @@ Built build_library(const std::string& m, const fs::path& root, const fs::path& 
         k.lesson = resolve_lesson(src, hs, lesson);
         k.fix = src.fix;
         k.says = src.says;
+        k.todo = src.blames.substr(0, src.blames.find(':'));  // "TODO 8", or empty
         std::vector<cp::BugPicture> pictures;
         for (const std::string& id : run.ids) {
             const auto rec = run.records.find(id);

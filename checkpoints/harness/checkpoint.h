@@ -110,8 +110,10 @@ struct Finding {
 
 // A prerequisite's own finding, told to the checkpoint that depends on it: "fix TODO N first
 // (see <checkpoint>, which tests it alone; <why>): <its message>", with a hint ending in
-// `hint_tail`.
-Finding fix_first(Finding f, const std::string& checkpoint, const std::string& why, const std::string& hint_tail);
+// `hint_tail`. `alone` false: <checkpoint> is a picture that needs other TODOs too ("which
+// checks it").
+Finding fix_first(Finding f, const std::string& checkpoint, const std::string& why, const std::string& hint_tail,
+                  bool alone = true);
 
 struct Judgement {
     std::vector<Finding> findings;  // empty: the properties hold

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -91,6 +93,8 @@ BugLibrary read_bug_library(const std::string& root, const std::string& mileston
             lib.bugs.back().fix = v;
         } else if (key == "says") {
             lib.bugs.back().says = v;
+        } else if (key == "todo") {
+            lib.bugs.back().todo = v;
         } else if (key == "fails") {
             lib.bugs.back().fails = split_words(v);
         } else if (key == "symptom") {
@@ -125,6 +129,7 @@ std::string bug_library_index(const BugLibrary& lib) {
     for (const KnownBug& b : lib.bugs) {
         out << "\nbug\t" << b.name << "\nsummary\t" << b.summary << "\nlesson\t" << b.lesson << "\n";
         if (!b.fix.empty()) out << "fix\t" << b.fix << "\n";
+        if (!b.todo.empty()) out << "todo\t" << b.todo << "\n";
         out << "says\t" << b.says << "\nfails\t";
         for (std::size_t i = 0; i < b.fails.size(); ++i) out << (i ? " " : "") << b.fails[i];
         out << "\n";
@@ -220,15 +225,45 @@ std::string rates_text(const DiagnosisRates& r) {
            ")";
 }
 
+namespace {
+
+// The TODO numbers in `text`'s "TODO 8", "TODOs 2 and 8", "TODOs 1-2" (3a counts as 3).
+std::set<int> todo_numbers(const std::string& text) {
+    std::set<int> out;
+    static const std::regex label(R"(TODOs? ([0-9]+[a-z]?((, | and |-)[0-9]+[a-z]?)*))");
+    static const std::regex number(R"(([0-9]+)[a-z]?(-([0-9]+))?)");
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), label); it != std::sregex_iterator(); ++it) {
+        const std::string list = (*it)[1].str();
+        for (auto n = std::sregex_iterator(list.begin(), list.end(), number); n != std::sregex_iterator(); ++n) {
+            const int a = std::stoi((*n)[1].str()), b = (*n)[3].matched ? std::stoi((*n)[3].str()) : a;
+            for (int t = a; t <= b && t - a < 20; ++t) out.insert(t);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
 std::string diagnosis_for(const std::string& milestone, const std::string& id, const raster::Image& picture,
-                          const raster::Image& expected) {
+                          const raster::Image& expected, const std::vector<std::string>& findings) {
     try {
         const BugLibrary lib = read_bug_library(bug_pictures_dir(), milestone, id);
         const auto named = diagnose(lib, id, picture, expected);
+        // The findings' own TODOs: a known bug of another TODO would contradict them.
+        std::set<int> blamed;
+        for (const std::string& f : findings) {
+            const std::set<int> t = todo_numbers(f);
+            blamed.insert(t.begin(), t.end());
+        }
         std::string out;
         for (const BugPicture* p : named) {
             const KnownBug* b = lib.bug(p->bug);
             if (!b) continue;
+            const std::set<int> own = todo_numbers(b->todo.empty() ? b->lesson : b->todo);
+            if (!blamed.empty() && !own.empty() &&
+                std::none_of(own.begin(), own.end(), [&](int t) { return blamed.count(t) > 0; })) {
+                continue;
+            }
             out += out.empty() ? "your picture matches what happens with a known bug (" : " Or with the known bug (";
             out += b->name + "): " + b->summary;
             if (!out.empty() && out.back() != '.') out += '.';

@@ -38,6 +38,7 @@ struct KnownBug {
     std::string lesson;   // the lesson section to reread: the full heading, e.g. "4. TODO 3: ..."
     std::string fix;      // what the right code does (fix: line); may be empty
     std::string says;     // the concept its checkpoints name
+    std::string todo;     // the TODO it blames (blames: line, "TODO 8"); may be empty
     std::vector<std::string> fails;  // every checkpoint the bug fails, in the suite's order
     std::string symptom_scene;       // the checkpoint the gallery shows (empty: none)
     std::string symptom;             // that checkpoint's first finding, as printed
@@ -119,8 +120,10 @@ DiagnosisRates measure_rates(const BugLibrary& lib, const std::vector<raster::Im
 // The harness's hook: for a failing checkpoint of `milestone`, the sentence that names the
 // matching known bug(s) and the lesson section to reread, or "" when none matches (or the
 // library cannot be read: a diagnosis is never worth failing over).
+// `findings` are the checkpoint's printed findings: a known bug of a TODO none of them names
+// is left out, so the line never contradicts them (and says nothing when no bug is left).
 std::string diagnosis_for(const std::string& milestone, const std::string& id, const raster::Image& picture,
-                          const raster::Image& expected);
+                          const raster::Image& expected, const std::vector<std::string>& findings = {});
 
 // "m1: 27 of 27 pictures of the deliberate bugs diagnosed right (100%), ..." for each of the
 // milestones given that has a library; one line each, for the report's footer.

@@ -199,10 +199,13 @@ std::map<std::string, double> values_under(const std::map<std::string, double>& 
     return out;
 }
 
-Finding fix_first(Finding f, const std::string& checkpoint, const std::string& why, const std::string& hint_tail) {
+Finding fix_first(Finding f, const std::string& checkpoint, const std::string& why, const std::string& hint_tail,
+                  bool alone_) {
     const std::string todo = f.todo.empty() ? "that TODO" : f.todo;
-    f.message = "fix " + todo + " first (see " + checkpoint + ", which tests it alone; " + why + "): " + f.message;
-    f.hint = "fix " + todo + " first: " + checkpoint + " checks it on its own, and " + hint_tail;
+    // A numbers checkpoint (m3.matrix_ops) tests its TODO alone; a picture (m3.solid_cube) needs others too.
+    const std::string alone = alone_ ? ", which tests it alone; " : ", which checks it; ";
+    f.message = "fix " + todo + " first (see " + checkpoint + alone + why + "): " + f.message;
+    f.hint = "fix " + todo + " first: " + checkpoint + (alone_ ? " checks it on its own, and " : " checks it, and ") + hint_tail;
     return f;
 }
 
@@ -366,7 +369,7 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
         const std::string own = finding_hint(suite, findings.front());
         rec.hint = own.empty() ? suite.hint(id) : own;
         if (!expected.empty() && main_it != student.images.end()) {
-            rec.diagnosis = diagnosis_for(suite.milestone, id, main_it->second, expected);
+            rec.diagnosis = diagnosis_for(suite.milestone, id, main_it->second, expected, rec.findings);
         }
     }
 

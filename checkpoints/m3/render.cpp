@@ -336,6 +336,41 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
     out.values["stats.lines_drawn"] = double(total.lines_drawn);
 }
 
+// How draw_model uses is_back_facing and painter_order, on two tiny models of its own: one
+// triangle drawn both ways round (culling on: the reference fills one and culls the other), and
+// a near triangle listed before a far one that covers it (painter on: the near one must be on
+// top). The judge compares the pixels with the reference's to tell a wrong caller from a wrong
+// callee (both of those functions pass their own checks when it looks).
+void draw_model_use(const Scene& s, cp::Artifacts& out) {
+    const Mat4 id = m3::identity();
+    if (s.cull) {
+        for (int way = 0; way < 2; ++way) {
+            m3::Model tri;
+            tri.positions = {{-0.8, -0.8, 0}, {0.8, -0.8, 0}, {0, 0.8, 0}};
+            tri.triangles = {way == 0 ? std::array<int, 3>{0, 1, 2} : std::array<int, 3>{0, 2, 1}};
+            tri.face_colors = {{250, 60, 60}};
+            raster::Image img = cp::guarded_image(24, 24);
+            cp::traced(*g_out, "draw_model", img, [&] { return m3::draw_model(img, tri, id, id, id, {true, false, true, false, false}, {}); });
+            long long n = 0;
+            for (int y = 0; y < img.height(); ++y) {
+                for (int x = 0; x < img.width(); ++x) n += img.at(x, y) != raster::Color{};
+            }
+            out.values["use.cull" + std::to_string(way)] = double(n);
+            out.stray_writes += img.stray_writes();
+        }
+    }
+    if (s.painter) {
+        m3::Model two;  // view space: the camera looks down -z, so z = -0.2 is nearer than z = -0.6
+        two.positions = {{-0.5, -0.5, -0.2}, {0.5, -0.5, -0.2}, {0, 0.5, -0.2}, {-0.9, -0.9, -0.6}, {0.9, -0.9, -0.6}, {0, 0.9, -0.6}};
+        two.triangles = {{0, 1, 2}, {3, 4, 5}};
+        two.face_colors = {{40, 200, 60}, {60, 60, 230}};
+        raster::Image img = cp::guarded_image(24, 24);
+        cp::traced(*g_out, "draw_model", img, [&] { return m3::draw_model(img, two, id, id, id, {true, false, false, false, true}, {}); });
+        put(out.values, "use.painter", Vec3{double(img.at(12, 12).r), double(img.at(12, 12).g), double(img.at(12, 12).b)});
+        out.stray_writes += img.stray_writes();
+    }
+}
+
 }  // namespace
 
 cp::Artifacts render(const std::string& id) {
@@ -354,6 +389,7 @@ cp::Artifacts render(const std::string& id) {
             for (const auto& [key, value] : pre) out.values[prerequisite_key(g) + key] = value;
         }
         if (!s.panels.empty()) draw_panels(s, img, out);
+        if (!s.panels.empty()) draw_model_use(s, out);
     });
 }
 

@@ -11,6 +11,7 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -302,12 +303,16 @@ void judge_group(Group g, Ctx& c) {
                                  " levels, expected " + str(want) + why);
             }
             const Color want[] = {{12, 13, 128}, {255, 0, 255}, {255, 0, 255}, {0, 0, 128}};
+            // The levels render.cpp passes (kept in step with it).
+            const char* const inputs[] = {"(12.4, 12.6, 128.2)", "(300, -20, 255.4)", "(1e9, -1e9, 254.6)",
+                                          "(NaN, 0.49, 127.7)"};
             for (int i = 0; i < 4; ++i) {
                 const std::string key = "color" + std::to_string(i);
                 const Color mine = color3(v, key);
                 if (mine == want[i]) continue;
                 const bool wrapped = i == 1 && mine.r == 44;
-                c.add("clamp", "TODO 5b: to_color case " + std::to_string(i) + " gave " + str(mine) + ", expected " +
+                c.add("clamp", "TODO 5b: to_color case " + std::to_string(i) + " (levels " + inputs[i] + ") gave " +
+                                   str(mine) + ", expected " +
                                    str(want[i]) +
                                    (wrapped ? ": 300 wrapped around to 44; clamp to [0, 255] before converting" : ""));
             }
@@ -561,7 +566,7 @@ const char* picture_topic(const std::string& id) {
 // The caller that a picture's failure points to once the functions it calls pass their own
 // checks: its concept tag and "TODO N" with what to look at. A theme that is already a
 // caller's concept stays.
-std::pair<std::string, std::string> caller_of(const std::string& theme, Shade shading) {
+std::pair<std::string, std::string> caller_of(const std::string& theme, Shade shading, bool clipping_differs) {
     auto lighting_caller = [shading]() -> std::pair<std::string, std::string> {
         if (shading == Shade::kFlat) {
             return {"flat shading", "TODO 9: draw_mesh lights a flat triangle once, with the face normal of its world "
@@ -590,7 +595,7 @@ std::pair<std::string, std::string> caller_of(const std::string& theme, Shade sh
         return {"pipeline", "TODO 9: normal_matrix passes, so its caller is wrong: draw_mesh sends every normal "
                             "through normal_matrix(model), never through the model matrix itself"};
     }
-    if (theme == "clipping") {
+    if (theme == "clipping" && clipping_differs) {
         return {"pipeline", "TODO 9: draw_mesh clips in clip space with clip_triangle, fans the polygon it returns and "
                             "divides only then"};
     }
@@ -600,12 +605,14 @@ std::pair<std::string, std::string> caller_of(const std::string& theme, Shade sh
     }
     if (theme == "flat shading" || theme == "gouraud" || theme == "per-pixel normals") return lighting_caller();
     if (theme == "interpolation" || theme == "rasterizer") {
-        return {theme, "TODO 8: fill_triangle interpolates and writes every fragment"};
+        return {theme, "TODO 8: fill_triangle must interpolate every covered pixel's attributes and write it only "
+                       "when it passes the depth test"};
     }
     if (theme == "pipeline" && (shading == Shade::kFlat || shading == Shade::kGouraud || shading == Shade::kPerPixel)) {
         return lighting_caller();  // a lit panel differs: how its lighting is called
     }
-    return {theme, "TODO 9: draw_mesh transforms, clips, fans and fills every triangle as depth_lighting.h says"};
+    return {theme == "clipping" ? "pipeline" : theme,
+            "TODO 9: draw_mesh transforms, clips, fans and fills every triangle as depth_lighting.h says"};
 }
 
 const char* shade_name(Shade s) {
@@ -709,12 +716,47 @@ void judge_screen_weights(Ctx& c, const raster::Image& mine, const cp::Artifacts
     }
 }
 
+void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, const raster::Image& expected);
+
+// fill_triangle (TODO 8) on m4.fill_triangle's own triangles, drawn by the render half of a
+// scene that calls it through draw_mesh (render.cpp, kFillKey), judged against the reference's
+// run of the same triangles as m4.fill_triangle judges it. Its most telling finding, or none.
+std::optional<cp::Finding> fill_triangle_fails(const cp::Artifacts& art, const cp::Artifacts& ref) {
+    const std::string image = kFillKey.substr(0, kFillKey.size() - 1);
+    const auto mine_it = art.images.find(image), ref_it = ref.images.find(image);
+    if (ref_it == ref.images.end() || mine_it == art.images.end()) return std::nullopt;
+    cp::Artifacts mine_fill, ref_fill;
+    mine_fill.images["main"] = mine_it->second;
+    ref_fill.images["main"] = ref_it->second;
+    mine_fill.values = cp::values_under(art.values, kFillKey);
+    ref_fill.values = cp::values_under(ref.values, kFillKey);
+    cp::Judgement scratch;
+    Ctx sub{scene(kFillScene), mine_fill.values, ref_fill.values, scratch};
+    judge_picture(sub, mine_fill, ref_fill, ref_it->second);
+    if (scratch.findings.empty()) return std::nullopt;
+    // The finding that names an idea (perspective weights, depth keys, the test order) before
+    // a count, and a count before "the picture differs".
+    auto rank = [](const cp::Finding& f) {
+        if (f.topic == "perspective" || f.topic == "depth key" ||
+            f.message.find("failed the depth test") != std::string::npos) {
+            return 0;
+        }
+        return f.message.rfind("the picture differs", 0) == 0 ? 2 : 1;
+    };
+    const cp::Finding* best = &scratch.findings.front();
+    for (const cp::Finding& f : scratch.findings) {
+        if (rank(f) < rank(*best)) best = &f;
+    }
+    return *best;
+}
+
 void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, const raster::Image& expected) {
     const Scene& s = c.s;
     const auto main_it = art.images.find("main");
     const raster::Image* mine = main_it == art.images.end() ? nullptr : &main_it->second;
     const bool sized = mine && mine->width() == s.width && mine->height() == s.height;
     const std::string topic = picture_topic(s.id);
+    std::size_t keep = std::string::npos;
 
     if (sized && !expected.empty() && cp::exceeds_tolerance(*mine, expected, tolerance_for(expected))) {
         // judge() checked every function of TODOs 1-7 this picture is drawn with, and they
@@ -737,7 +779,16 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 worst_count = n;
             }
         }
-        const auto [caller_topic, advice] = caller_of(topic, worst ? worst->shading : Shade::kFaceColor);
+        // Clipping is the question only when the clip counts of that panel differ.
+        bool clipping_differs = false;
+        if (worst) {
+            const std::string pk = "panel" + std::to_string(worst - s.panels.data()) + ".stats.";
+            for (const char* k : {"triangles_clipped", "triangles_drawn"}) {
+                clipping_differs |= get(c.ref, pk + "triangles_clipped") > 0 && get(c.mine, pk + k) != get(c.ref, pk + k);
+            }
+        }
+        const auto [caller_topic, advice] =
+            caller_of(topic, worst ? worst->shading : Shade::kFaceColor, clipping_differs);
         const std::string where = s.panels.size() > 1 && worst ? " (most in panel " + std::to_string(worst - s.panels.data() + 1) + ")" : "";
         std::vector<std::string> passing;
         for (Group g : prerequisite_groups(s)) {
@@ -747,10 +798,18 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         std::string list;
         for (std::size_t i = 0; i < passing.size(); ++i) list += (i ? ", " : "") + passing[i];
         const auto colon = advice.find(": ");  // "TODO 9: what its caller must do"
-        c.add(caller_topic, advice.substr(0, colon) + ": the picture differs from the expected one beyond the tolerance" +
+        const std::optional<cp::Finding> fill = s.id == kFillScene ? std::nullopt : fill_triangle_fails(art, ref);
+        if (fill) {
+            // fill_triangle itself fails on its own checkpoint's triangles: that is the caller
+            // to fix, whatever the scene is about.
+            const cp::Finding f = cp::fix_first(*fill, kFillScene, "this picture is drawn with it",
+                                                "this picture cannot come out right before that checkpoint passes");
+            c.j.findings.push_back(f);
+        } else c.add(caller_topic, advice.substr(0, colon) + ": the picture differs from the expected one beyond the tolerance" +
                                 where + " (see diff.png), though the functions it is drawn with pass their own checks" +
                                 (list.empty() ? std::string() : " (" + list + ")") + ", so look at how they are called: " +
                                 advice.substr(colon + 2) + ". This scene is about: " + s.hint);
+        if (fill) keep = c.j.findings.size();  // the counts and keys below follow from fill_triangle's mistake
     }
     std::map<std::string, std::pair<double, double>> totals;  // per count: yours, the reference's (all panels)
     for (std::size_t p = 0; p < s.panels.size(); ++p) {
@@ -786,6 +845,20 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             {"interpolated", "needs", "attribute values interpolated", "TODO 8"},
         };
         const bool clipped = get(c.ref, key + ".stats.triangles_clipped") > 0;
+        // Keys read back from the depth buffer at known pixels, against the reference's. A
+        // smaller key is nearer in every format, so a key that is FARTHER than the reference's
+        // at every probe that differs was written by a fragment the depth test rejected.
+        const bool float_format = panel.format == Format::kFloatZ || panel.format == Format::kReversedZ ||
+                                  panel.format == Format::kInverseW;
+        int farther = 0, differ = 0;
+        for (std::size_t k = 0; k < panel.depth_probes.size(); ++k) {
+            const std::string pk = key + ".probe" + std::to_string(k);
+            const double a = get(c.mine, pk), b = get(c.ref, pk);
+            if (std::abs(a - b) <= (float_format ? 4 : 2)) continue;
+            ++differ;
+            farther += a > b;
+        }
+        const bool overwritten = differ > 0 && farther == differ;
         for (const auto& st : kStats) {
             const std::string k = key + ".stats." + st[0];
             const double a = get(c.mine, k), b = get(c.ref, k);
@@ -810,26 +883,29 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                        panel.depth_test) {
                 why = ": are hidden fragments interpolated too? Test the depth first; only a fragment that "
                       "passes (or ties) needs its attributes";
-            } else if (name == "depth_writes" && a > b) {
-                why = ": is a fragment written when the test fails, or on a tie without depth_passes()?";
+            } else if (name == "depth_writes" && a > b && overwritten) {
+                why = ": the depth probes below hold keys farther than the reference's, so a fragment that failed "
+                      "the depth test wrote its key; test first, and write color and key only when it passes";
             }
             c.add(b == 0 ? "needs" : st[1], std::string(st[3]) + ": " + num(a) + " " + st[2] + where + ", expected " +
                                                 (per_triangle ? num(b) : "about " + num(b)) + why);
         }
-        // Keys read back from the depth buffer at known pixels, against the reference's.
         for (std::size_t k = 0; k < panel.depth_probes.size(); ++k) {
             const std::string pk = key + ".probe" + std::to_string(k);
             const double a = get(c.mine, pk), b = get(c.ref, pk);
-            const bool float_format = panel.format == Format::kFloatZ || panel.format == Format::kReversedZ ||
-                                      panel.format == Format::kInverseW;
             if (std::abs(a - b) <= (float_format ? 4 : 2)) continue;
             const auto [x, y] = panel.depth_probes[k];
             double d = std::nan("");
             if (panel.format == Format::kFloatZ && b >= 0 && b < 4294967296.0) d = std::bit_cast<float>(static_cast<std::uint32_t>(b));
-            c.add("depth key", "TODO 8: the depth buffer at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+            // A key written by a rejected fragment is the depth test's order (test, then write).
+            c.add(overwritten ? "depth test" : "depth key", "TODO 8: the depth buffer at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
                                    ")" + where + " holds key " + num(a) + ", expected " + num(b) +
                                    (std::isnan(d) ? "" : " (d = " + num(d) + ")") +
-                                   ": depth is interpolated with the SCREEN weights, then depth_key");
+                                   (overwritten ? ", a FARTHER key, as at every probe that differs: a hidden "
+                                                  "fragment wrote its key though it failed the depth test"
+                                                : std::string(a < b ? ", a nearer key" : ", a farther key") +
+                                                      " (the rule: z_ndc is interpolated with the screen weights "
+                                                      "l_i, then keyed by depth_key)"));
         }
         if (!sized) continue;
         if (!panel.screen_tris.empty()) judge_screen_weights(c, *mine, ref, panel);
@@ -890,7 +966,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
     }
     if (s.checks.shading_chart && sized) judge_shading_chart(c, *mine, ref);
     for (const auto& [p, q] : s.checks.same_panels) {
-        if (!sized) break;
+        if (!sized || keep != std::string::npos) break;
         const Panel &a = s.panels[std::size_t(p)], &b = s.panels[std::size_t(q)];
         long long diff = 0;
         for (int y = 0; y < a.h; ++y) {
@@ -906,6 +982,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                       "(fill_triangle, TODO 8)");
         }
     }
+    if (keep < c.j.findings.size()) c.j.findings.resize(keep);
 }
 
 }  // namespace

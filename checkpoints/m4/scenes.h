@@ -124,6 +124,11 @@ const Scene& scene(const std::string& id);
 std::vector<Group> prerequisite_groups(const Scene& s);
 std::string prerequisite_key(Group g);         // "pre3."
 std::string prerequisite_checkpoint(Group g);  // the public numbers scene that judges g
+// A scene drawn through draw_mesh also draws kFillScene's ready-made triangles with
+// fill_triangle; their values are stored under kFillKey and their picture as the image
+// "fill_triangle", so the judge can tell which caller is wrong.
+inline const std::string kFillScene = "m4.fill_triangle";
+inline const std::string kFillKey = "fill_triangle.";
 
 // Shapes shared with the demo, the tables and the benchmark.
 // A UV sphere of radius 1: `segments` around, segments / 2 from pole to pole, with its exact
