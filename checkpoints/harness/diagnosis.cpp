@@ -249,10 +249,14 @@ std::string diagnosis_for(const std::string& milestone, const std::string& id, c
     try {
         const BugLibrary lib = read_bug_library(bug_pictures_dir(), milestone, id);
         const auto named = diagnose(lib, id, picture, expected);
-        // The findings' own TODOs: a known bug of another TODO would contradict them.
+        // The TODOs a finding sends the student to first ("fix TODO N first"): a known bug of
+        // another TODO would contradict it. Other findings may name several TODOs a bug touches
+        // (a winding bug shows in both fills), so they filter nothing.
         std::set<int> blamed;
         for (const std::string& f : findings) {
-            const std::set<int> t = todo_numbers(f);
+            const std::size_t at = f.find("fix TODO");
+            if (at == std::string::npos) continue;
+            const std::set<int> t = todo_numbers(f.substr(at + 4, f.find(" first", at) - (at + 4)));
             blamed.insert(t.begin(), t.end());
         }
         std::string out;

@@ -264,7 +264,7 @@ void judge_group(Group g, Ctx& c) {
                 const double len = raster::length(cases[i].normal);
                 return len > 0 && std::abs(len - 1) > 1e-9;
             };
-            const bool only_long_normal = failing.size() == 1 && non_unit(failing[0]);
+            const bool only_non_unit = !failing.empty() && std::all_of(failing.begin(), failing.end(), non_unit);
             for (std::size_t i = 0; i < cases.size(); ++i) {
                 const auto& k = cases[i];
                 const Vec3 want = lambert(k.ambient, k.lights, k.base, k.position, k.normal);
@@ -273,10 +273,11 @@ void judge_group(Group g, Ctx& c) {
                 const Vec3 ambient_only{k.base.r * k.ambient.x, k.base.g * k.ambient.y, k.base.b * k.ambient.z};
                 std::string topic = "lambert", why;
                 const bool all_zero = same3(mine, Vec3{}, 0);
-                if (only_long_normal) {
-                    why = ": this is the only case whose normal is not of unit length (its length is " +
-                          num(raster::length(k.normal)) + "), and the only case that fails: normalize N inside "
-                          "shade() before the dot products (depth_lighting.h says the normal need not be unit)";
+                if (only_non_unit) {
+                    why = ": its normal is not of unit length (its length is " + num(raster::length(k.normal)) +
+                          "), like that of every failing case, and every case with a unit normal passes: normalize N "
+                          "inside shade() before the dot products, whether it is longer or shorter than 1 "
+                          "(depth_lighting.h says the normal need not be unit; an interpolated one is shorter)";
                 } else if (all_zero && !same3(want, Vec3{}, 0)) {
                     why = ": shade() returned nothing; start from the ambient term";
                 } else if (i == 1 && (mine.x < ambient_only.x - 1e-6)) {

@@ -624,6 +624,8 @@ std::vector<LambertCase> lambert_cases() {
         {{0.3, 0.3, 0.3}, {directional({0, -1, 0}, {1.5, 1.5, 1.5}), point({0, 5, 0}, {1, 1, 1})}, base, {0, 0, 0},
          {0, 1, 0}},  // too bright
         {{0.1, 0.1, 0.1}, {directional({0, 0, 0})}, base, {0, 0, 0}, {0, 1, 0}},  // zero light direction
+        // short normal: as an interpolated one is between vertices
+        {{0.1, 0.1, 0.1}, {directional({-1, 0, -1}, {1, 1, 1})}, base, {0, 0, 0}, {0, 0, 0.5}},
     };
     if (current_seed != 0) {
         Rng rng(current_seed, "m4.lambert");
