@@ -116,13 +116,20 @@ std::string mutate(const std::string& source, const std::string& bug_path) {
     int blocks = 0;
     for (std::size_t i = 0; i < bug.size(); ++i) {
         const std::string& l = bug[i];
+        auto misplaced = [&](const char* what) {
+            return std::runtime_error(bug_path + ":" + std::to_string(i + 1) + ": " + what +
+                                      " (each block is @@ find, its text, @@ replace, its text, @@ end)");
+        };
         if (l == "@@ find") {
+            if (state != kHeader) throw misplaced("@@ find inside a block that no @@ end closed");
             state = kFind;
             find.clear();
             replace.clear();
         } else if (l == "@@ replace") {
+            if (state != kFind) throw misplaced("@@ replace without its @@ find");
             state = kReplace;
         } else if (l == "@@ end") {
+            if (state != kReplace) throw misplaced("@@ end without its @@ replace");
             const std::string f = join(find), r = join(replace);
             const auto at = text.find(f);
             if (find.empty() || at == std::string::npos || text.find(f, at + 1) != std::string::npos) {
@@ -139,6 +146,7 @@ std::string mutate(const std::string& source, const std::string& bug_path) {
             replace.push_back(l);
         }
     }
+    if (state != kHeader) throw std::runtime_error(bug_path + ": the last block has no @@ end");
     bool has_flags = false;
     for (const auto& l : bug) has_flags |= l.rfind("flags:", 0) == 0;
     if (blocks == 0 && !has_flags) {
