@@ -436,8 +436,6 @@ namespace {
 
 using Rng = cp::VariantRng;
 
-std::uint64_t current_seed = 0;
-std::vector<Scene> varied;
 
 constexpr double kPublicSingularAngles[6] = {0.7, 0.4, 1.1, 0.9, -0.6, 0.3};
 
@@ -505,12 +503,18 @@ const std::vector<Scene>& public_scenes() {
     return all;
 }
 
+// Made on first use: the checkpoints register (and list the scenes) during static initialization.
+cp::SceneVariants<Scene>& variants() {
+    static cp::SceneVariants<Scene> all(public_scenes, vary);
+    return all;
+}
+
 }  // namespace
 
 Matrix near_singular_matrix() {
-    if (current_seed == 0) return public_near_singular_matrix(kPublicSingularAngles);
+    if (variant_seed() == 0) return public_near_singular_matrix(kPublicSingularAngles);
     // Other Givens angles (up to 0.25 rad away): still every entry mixed, condition number 1e12.
-    Rng rng(current_seed, "m3.near_singular");
+    Rng rng(variant_seed(), "m3.near_singular");
     double angles[6];
     for (int k = 0; k < 6; ++k) angles[k] = jitter(rng, kPublicSingularAngles[k], 25);
     return public_near_singular_matrix(angles);
@@ -521,8 +525,8 @@ Matrix near_singular_matrix() {
 // stays negative), while every number changes.
 std::vector<std::array<Vec4, 3>> clip_cases() {
     auto cases = public_clip_cases();
-    if (current_seed == 0) return cases;
-    Rng rng(current_seed, "m3.clip_numbers.polygons");
+    if (variant_seed() == 0) return cases;
+    Rng rng(variant_seed(), "m3.clip_numbers.polygons");
     for (auto& c : cases) {
         for (Vec4& v : c) v = v * (rng.uniform(50, 200) / 100.0);
     }
@@ -531,8 +535,8 @@ std::vector<std::array<Vec4, 3>> clip_cases() {
 
 std::vector<std::array<Vec4, 2>> clip_line_cases() {
     auto cases = public_clip_line_cases();
-    if (current_seed == 0) return cases;
-    Rng rng(current_seed, "m3.clip_numbers.lines");
+    if (variant_seed() == 0) return cases;
+    Rng rng(variant_seed(), "m3.clip_numbers.lines");
     for (auto& c : cases) {
         for (Vec4& v : c) v = v * (rng.uniform(50, 200) / 100.0);
     }
@@ -585,22 +589,12 @@ std::string prerequisite_checkpoint(Group g) {
     return "m3";
 }
 
-const std::vector<Scene>& scenes() { return current_seed == 0 ? public_scenes() : varied; }
+const std::vector<Scene>& scenes() { return variants().scenes(); }
 
-std::uint64_t variant_seed() { return current_seed; }
+std::uint64_t variant_seed() { return variants().seed(); }
 
 const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
 
-void use_variant(std::uint64_t seed) {
-    if (seed == current_seed) return;
-    current_seed = 0;
-    varied.clear();
-    if (seed == 0) return;
-    for (const Scene& s : public_scenes()) {
-        Rng rng(seed, s.id);
-        varied.push_back(vary(s, rng));
-    }
-    current_seed = seed;
-}
+void use_variant(std::uint64_t seed) { variants().use(seed); }
 
 }  // namespace m3cp

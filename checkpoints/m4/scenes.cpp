@@ -519,8 +519,6 @@ std::vector<Scene> build() {
 
 using Rng = cp::VariantRng;
 
-std::uint64_t current_seed = 0;
-std::vector<Scene> varied;
 
 Scene vary(const Scene& pub, Rng& rng) {
     Scene s = pub;
@@ -563,6 +561,12 @@ const std::vector<Scene>& public_scenes() {
     return all;
 }
 
+// Made on first use: the checkpoints register (and list the scenes) during static initialization.
+cp::SceneVariants<Scene>& variants() {
+    static cp::SceneVariants<Scene> all(public_scenes, vary);
+    return all;
+}
+
 }  // namespace
 
 std::vector<KeyCase> key_cases() {
@@ -575,8 +579,8 @@ std::vector<KeyCase> key_cases() {
     cases.push_back({3, 0.5, -1});
     cases.push_back({0, std::numeric_limits<double>::quiet_NaN(), 1});
     cases.push_back({2, std::numeric_limits<double>::quiet_NaN(), 1});
-    if (current_seed != 0) {
-        Rng rng(current_seed, "m4.depth_keys");
+    if (variant_seed() != 0) {
+        Rng rng(variant_seed(), "m4.depth_keys");
         for (int k = 0; k < 12; ++k) cases.push_back({k % 4, rng.uniform(-999, 999) / 1000.0, rng.uniform(1, 5000) / 100.0});
     }
     return cases;
@@ -601,9 +605,9 @@ std::vector<ClipCase> clip_cases() {
         {{{{1, 0.2, 0.1, 1}, {0.2, -0.3, 0.2, 1}, {1.8, 0.6, 0, 1}}}, {{{255, 0, 0}, {0, 255, 0}, {0, 0, 255}}},
          {{{0, 0}, {1, 0}, {0, 1}}}},
     };
-    if (current_seed != 0) {
+    if (variant_seed() != 0) {
         // Each vertex times its own positive factor: the same point of projective space.
-        Rng rng(current_seed, "m4.clip_attributes");
+        Rng rng(variant_seed(), "m4.clip_attributes");
         for (auto& c : cases) {
             for (Vec4& v : c.clip) v = v * (rng.uniform(50, 200) / 100.0);
         }
@@ -627,8 +631,8 @@ std::vector<LambertCase> lambert_cases() {
         // short normal: as an interpolated one is between vertices
         {{0.1, 0.1, 0.1}, {directional({-1, 0, -1}, {1, 1, 1})}, base, {0, 0, 0}, {0, 0, 0.5}},
     };
-    if (current_seed != 0) {
-        Rng rng(current_seed, "m4.lambert");
+    if (variant_seed() != 0) {
+        Rng rng(variant_seed(), "m4.lambert");
         for (LambertCase& c : cases) {
             c.base = {static_cast<std::uint8_t>(rng.uniform(40, 255)), static_cast<std::uint8_t>(rng.uniform(40, 255)),
                       static_cast<std::uint8_t>(rng.uniform(40, 255))};
@@ -682,22 +686,12 @@ std::string prerequisite_checkpoint(Group g) {
     return "m4";
 }
 
-const std::vector<Scene>& scenes() { return current_seed == 0 ? public_scenes() : varied; }
+const std::vector<Scene>& scenes() { return variants().scenes(); }
 
-std::uint64_t variant_seed() { return current_seed; }
+std::uint64_t variant_seed() { return variants().seed(); }
 
 const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
 
-void use_variant(std::uint64_t seed) {
-    if (seed == current_seed) return;
-    current_seed = 0;
-    varied.clear();
-    if (seed == 0) return;
-    for (const Scene& s : public_scenes()) {
-        Rng rng(seed, s.id);
-        varied.push_back(vary(s, rng));
-    }
-    current_seed = seed;
-}
+void use_variant(std::uint64_t seed) { variants().use(seed); }
 
 }  // namespace m4cp
