@@ -80,6 +80,12 @@ def main():
         for i in range(12):
             data = bytearray([i % cases]) + bytearray(rng.randrange(256) for _ in range(rng.randrange(24, 160)))
             write(os.path.join(HERE, "corpus", m, "seed-%02d" % i), data)
+    # Milestone 5 (its own generator, so the seeds above stay as they were): 24 seeds over its
+    # five cases, longer ones for the scenes (textures, meshes, lights and shadow settings).
+    rng5 = random.Random(20)
+    for i in range(24):
+        data = bytearray([i % 5]) + bytearray(rng5.randrange(256) for _ in range(rng5.randrange(48, 400)))
+        write(os.path.join(HERE, "corpus", "m5", "seed-%02d" % i), data)
     # Issue 19: fill_triangle's inline perspective weights had no fallback, so these made the
     # uv NaN and m4::checker converted floor(NaN * 8) to long long (undefined behaviour).
     reg = os.path.join(HERE, "regressions", "m4")
