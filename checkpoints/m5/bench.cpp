@@ -1,0 +1,366 @@
+// `make bench`, milestone 5: the reference's textured, specular, shadowed frame against a
+// baseline measured in the same run, on a sphere of about 2,600 triangles and one of about a
+// million standing on a floor, single-threaded, 800 x 800, in CPU time; then what each pass of
+// the reference costs. Never a timed test: the numbers are printed, and `bench_m5 --lesson
+// FILE` writes them into lesson 5's table.
+//
+// The baseline has the structure of the best-known tutorial renderer's last lessons (the goal
+// is ten times its throughput): a shader object whose virtual vertex() runs for every corner of
+// every triangle, at every pixel of a triangle's bounding box the barycentric coordinates
+// solved from scratch (the inverse of a 3x3 matrix), and a virtual fragment() that samples the
+// texture bilinearly, lights with Blinn-Phong and looks the shadow map up at every pixel it
+// shades. Its shadow pass is the same rasterizer with a depth-only shader.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <time.h>
+
+#include "harness/bench_build.h"
+#include "m4/scenes.h"
+#include "textures_shadows.h"
+
+namespace {
+
+using raster::Vec2;
+using raster::Vec3;
+using raster::Vec4;
+
+constexpr int kSize = 800;
+constexpr int kShadowSize = 1024;
+
+raster::Image checker_image(int n, int cells) {
+    raster::Image img(n, n);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const bool even = ((x * cells / n) + (y * cells / n)) % 2 == 0;
+            img.set(x, y, even ? raster::Color{230, 200, 150} : raster::Color{90, 60, 40});
+        }
+    return img;
+}
+
+// A unit sphere with spherical uv (u around, v from the north pole down) and exact normals.
+m4::Mesh sphere(int segments) {
+    const m4cp::Mesh s = m4cp::sphere_mesh(segments, true);
+    m4::Mesh m;
+    m.positions = s.positions;
+    m.triangles = s.triangles;
+    m.normals = s.normals;
+    for (const Vec3& p : m.positions) {
+        const double u = std::atan2(-p.z, p.x) / (2 * std::numbers::pi) + 0.5;
+        const double v = std::acos(std::clamp(p.y, -1.0, 1.0)) / std::numbers::pi;
+        m.uvs.push_back({u * 4, v * 2});
+    }
+    return m;
+}
+
+m4::Mesh floor_mesh() {
+    m4::Mesh m;
+    m.positions = {{-4, -1, 4}, {4, -1, 4}, {4, -1, -4}, {-4, -1, -4}};
+    m.triangles = {{0, 1, 2}, {0, 2, 3}};
+    m.uvs = {{0, 8}, {8, 8}, {8, 0}, {0, 0}};
+    m.normals = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
+    return m;
+}
+
+struct Scene {
+    m4::Mesh ball, ground;
+    m5::Texture texture;
+    m5::Camera camera;
+    m5::Lighting lighting;
+    m5::ShadowSettings shadows;
+    Vec3 specular{120, 120, 120};
+    double shininess = 40;
+};
+
+Scene make_scene(int segments) {
+    Scene sc;
+    sc.ball = sphere(segments);
+    sc.ground = floor_mesh();
+    sc.texture = m5::make_texture(checker_image(256, 16));
+    const Vec3 eye{0.4, 1.2, 3.4};
+    sc.camera.eye = eye;
+    sc.camera.view = m3::look_at(eye, {0, -0.3, 0}, {0, 1, 0});
+    sc.camera.projection = m3::perspective(50, 1, 0.5, 20);
+    sc.lighting.lights.push_back({{-0.5, -1, -0.4}, {0.9, 0.9, 0.9}, true});
+    sc.shadows.resolution = kShadowSize;
+    sc.shadows.center = {0, 0, 0};
+    sc.shadows.radius = 4.5;
+    return sc;
+}
+
+int g_runs = 1;
+template <class F>
+double best_cpu_seconds(F&& fn) {
+    auto now = [] {
+        timespec ts{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+        return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+    };
+    double best = 0;
+    for (int run = 0; run < g_runs; ++run) {
+        const double start = now();
+        fn();
+        const double t = now() - start;
+        best = run == 0 ? t : std::min(best, t);
+    }
+    return best;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+// What the reference draws: which parts are on (the pass costs compare frames without one).
+struct Parts {
+    bool texture = true, specular = true, shadows = true;
+};
+
+struct Result {
+    double seconds = 0;
+    m5::Stats stats;
+};
+
+Result run_reference(Scene& sc, Parts parts) {
+    m5::Frame frame;
+    frame.color = raster::Image(kSize, kSize);
+    m5::Lighting lighting = sc.lighting;
+    for (m5::Light& l : lighting.lights) l.casts_shadows = parts.shadows;
+    std::vector<m5::Object> objects(2);
+    objects[0].mesh = &sc.ball;
+    objects[1].mesh = &sc.ground;
+    for (m5::Object& o : objects) {
+        o.material.color = {200, 180, 150};
+        o.material.texture = parts.texture ? &sc.texture : nullptr;
+        o.material.filter = m5::Filter::kTrilinear;
+        o.material.specular = parts.specular ? sc.specular : Vec3{};
+        o.material.shininess = sc.shininess;
+    }
+    Result r;
+    r.seconds = best_cpu_seconds([&] {
+        m4::clear_frame(frame, {0, 0, 0}, true, m4::DepthFormat::kFloatZ);
+        r.stats = m5::draw_scene(frame, objects, sc.camera, lighting, sc.shadows);
+    });
+    return r;
+}
+
+// ---- the tutorial baseline ----
+struct TutorialShader {
+    virtual ~TutorialShader() = default;
+    virtual Vec4 vertex(int face, int corner) = 0;                        // clip position
+    virtual bool fragment(const double weights[3], raster::Color& out) = 0;  // true: discard
+};
+
+// The 3x3 solve at every pixel of the bounding box, perspective-corrected weights, a depth
+// buffer of doubles; fragment() for the pixels that pass the depth test.
+template <class Shader>
+long long rasterize(const m4::Mesh& mesh, Shader& shader, int size, std::vector<double>& zbuffer, raster::Image* img) {
+    long long shaded = 0;
+    for (int face = 0; face < int(mesh.triangles.size()); ++face) {
+        Vec4 clip[3];
+        double sx[3], sy[3];
+        for (int k = 0; k < 3; ++k) {
+            clip[k] = shader.vertex(face, k);
+            sx[k] = (clip[k].x / clip[k].w + 1) / 2 * size;
+            sy[k] = (1 - clip[k].y / clip[k].w) / 2 * size;
+        }
+        const int x0 = std::max(0, int(std::floor(std::min({sx[0], sx[1], sx[2]}))));
+        const int x1 = std::min(size - 1, int(std::ceil(std::max({sx[0], sx[1], sx[2]}))));
+        const int y0 = std::max(0, int(std::floor(std::min({sy[0], sy[1], sy[2]}))));
+        const int y1 = std::min(size - 1, int(std::ceil(std::max({sy[0], sy[1], sy[2]}))));
+        for (int x = x0; x <= x1; ++x) {
+            for (int y = y0; y <= y1; ++y) {
+                const double m[3][3] = {{sx[0], sx[1], sx[2]}, {sy[0], sy[1], sy[2]}, {1, 1, 1}};
+                double cof[3][3];
+                for (int i = 0; i < 3; ++i)
+                    for (int j = 0; j < 3; ++j) {
+                        const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+                        cof[i][j] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
+                    }
+                const double det = m[0][0] * cof[0][0] + m[0][1] * cof[0][1] + m[0][2] * cof[0][2];
+                if (std::abs(det) < 1e-9) continue;
+                const double p[3] = {x + 0.5, y + 0.5, 1};
+                double b[3];
+                for (int i = 0; i < 3; ++i) b[i] = (cof[0][i] * p[0] + cof[1][i] * p[1] + cof[2][i] * p[2]) / det;
+                if (b[0] < 0 || b[1] < 0 || b[2] < 0) continue;
+                double q[3] = {b[0] / clip[0].w, b[1] / clip[1].w, b[2] / clip[2].w};
+                const double sum = q[0] + q[1] + q[2];
+                for (double& v : q) v /= sum;
+                const double z = b[0] * clip[0].z / clip[0].w + b[1] * clip[1].z / clip[1].w + b[2] * clip[2].z / clip[2].w;
+                double& stored = zbuffer[std::size_t(y) * size + x];
+                if (z > stored) continue;
+                raster::Color c;
+                if (shader.fragment(q, c)) continue;
+                stored = z;
+                if (img) img->set(x, y, c);
+                ++shaded;
+            }
+        }
+    }
+    return shaded;
+}
+
+struct DepthShader final : TutorialShader {
+    const m4::Mesh* mesh = nullptr;
+    m3::Mat4 mvp;
+    Vec4 vertex(int face, int corner) override { return mvp * raster::point(mesh->positions[mesh->triangles[face][corner]]); }
+    bool fragment(const double*, raster::Color&) override { return false; }
+};
+
+struct PhongShader final : TutorialShader {
+    const m4::Mesh* mesh = nullptr;
+    const Scene* sc = nullptr;
+    m3::Mat4 mvp, light_mvp;
+    const std::vector<double>* shadow = nullptr;
+    Vec2 uv[3];
+    Vec3 normal[3], world[3];
+    Vec4 vertex(int face, int corner) override {
+        const int i = mesh->triangles[face][corner];
+        uv[corner] = mesh->uvs[i];
+        normal[corner] = mesh->normals[i];
+        world[corner] = mesh->positions[i];
+        return mvp * raster::point(world[corner]);
+    }
+    bool fragment(const double q[3], raster::Color& out) override {
+        const Vec2 t = uv[0] * q[0] + uv[1] * q[1] + uv[2] * q[2];
+        const Vec3 base = m5::sample_bilinear(sc->texture.levels[0], t, m5::Wrap::kRepeat, m5::Wrap::kRepeat);
+        const Vec3 n = raster::normalize(normal[0] * q[0] + normal[1] * q[1] + normal[2] * q[2]);
+        const Vec3 p = world[0] * q[0] + world[1] * q[1] + world[2] * q[2];
+        const Vec3 l = raster::normalize(-sc->lighting.lights[0].direction);
+        const Vec3 v = raster::normalize(sc->camera.eye - p);
+        // The shadow map, looked up at every shaded pixel whatever the light does there.
+        const Vec4 s = light_mvp * raster::point(p);
+        const int sx = std::clamp(int((s.x + 1) / 2 * kShadowSize), 0, kShadowSize - 1);
+        const int sy = std::clamp(int((1 - s.y) / 2 * kShadowSize), 0, kShadowSize - 1);
+        const double lit = (*shadow)[std::size_t(sy) * kShadowSize + sx] + 0.01 >= s.z ? 1.0 : 0.0;
+        const double diffuse = std::max(0.0, raster::dot(n, l));
+        const Vec3 h = raster::normalize(l + v);
+        const double spec = diffuse > 0 ? std::pow(std::max(0.0, raster::dot(n, h)), sc->shininess) : 0.0;
+        auto ch = [](double x) { return std::uint8_t(std::clamp(x, 0.0, 255.0) + 0.5); };
+        const Vec3 c = base * (0.1 + 0.9 * lit * diffuse) + sc->specular * (0.9 * lit * spec);
+        out = {ch(c.x), ch(c.y), ch(c.z)};
+        return false;
+    }
+};
+
+Result run_tutorial(Scene& sc) {
+    const m3::Mat4 light = m5::light_view_projection(sc.lighting.lights[0].direction, sc.shadows);
+    const m3::Mat4 vp = sc.camera.projection * sc.camera.view;
+    raster::Image img(kSize, kSize);
+    std::vector<double> zbuffer(std::size_t(kSize) * kSize), shadow(std::size_t(kShadowSize) * kShadowSize);
+    Result r;
+    r.seconds = best_cpu_seconds([&] {
+        std::fill(shadow.begin(), shadow.end(), std::numeric_limits<double>::infinity());
+        for (const m4::Mesh* mesh : {&sc.ball, &sc.ground}) {
+            DepthShader d;
+            d.mesh = mesh;
+            d.mvp = light;
+            rasterize(*mesh, d, kShadowSize, shadow, nullptr);
+        }
+        std::fill(zbuffer.begin(), zbuffer.end(), std::numeric_limits<double>::infinity());
+        img.fill({0, 0, 0});
+        r.stats.shaded = 0;
+        for (const m4::Mesh* mesh : {&sc.ball, &sc.ground}) {
+            PhongShader s;
+            s.mesh = mesh;
+            s.sc = &sc;
+            s.mvp = vp;
+            s.light_mvp = light;
+            s.shadow = &shadow;
+            r.stats.shaded += rasterize(*mesh, s, kSize, zbuffer, &img);
+        }
+    });
+    return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string lesson;
+    if (argc == 3 && std::string(argv[1]) == "--lesson") lesson = argv[2];
+    std::printf("Milestone 5, one thread, %dx%d, trilinear texture, Blinn-Phong, a %dx%d shadow map with 3x3 PCF "
+                "(reference against the tutorial baseline)\n",
+                kSize, kSize, kShadowSize, kShadowSize);
+    std::printf("build %s (%s): the ratios depend on it\n\n", RASTER_BUILD_TYPE, RASTER_BUILD_FLAGS);
+    const int rounds = std::getenv("BENCH_M5_ROUNDS") ? std::max(1, std::atoi(std::getenv("BENCH_M5_ROUNDS"))) : 5;
+
+    std::ostringstream table;
+    table << "Build: " << RASTER_BUILD_TYPE << " (`" << RASTER_BUILD_FLAGS << "`), one thread, CPU time, median of " << rounds
+          << " alternating rounds.\n\n"
+          << "| mesh | triangles | reference ms per frame | tutorial baseline ms | speedup (median) | speedup, slowest to "
+             "fastest round | shadow pass ms | texture ms | specular ms | rest ms |\n"
+             "|---|---|---|---|---|---|---|---|---|---|\n";
+    bool goals = true;
+    for (const auto& [name, segments] : {std::pair{"sphere, ~2,600 triangles, and a floor", 52},
+                                         std::pair{"sphere, ~1,000,000 triangles, and a floor", 1002}}) {
+        if ((std::getenv("BENCH_M5_SMALL") && segments > 100) || (std::getenv("BENCH_M5_LARGE") && segments < 100)) continue;
+        Scene sc = make_scene(segments);
+        std::vector<double> tr, tt, speedups, no_shadow, no_texture, no_specular, bare;
+        Result ref, tutorial;
+        for (int r = 0; r < rounds; ++r) {
+            ref = run_reference(sc, {});
+            tutorial = run_tutorial(sc);
+            tr.push_back(ref.seconds);
+            tt.push_back(tutorial.seconds);
+            speedups.push_back(tutorial.seconds / ref.seconds);
+            no_shadow.push_back(run_reference(sc, {true, true, false}).seconds);
+            no_texture.push_back(run_reference(sc, {false, true, true}).seconds);
+            no_specular.push_back(run_reference(sc, {true, false, true}).seconds);
+            bare.push_back(run_reference(sc, {false, false, false}).seconds);
+        }
+        const double t_ref = median(tr), t_tut = median(tt), speedup = median(speedups);
+        const double lo = *std::min_element(speedups.begin(), speedups.end());
+        const double hi = *std::max_element(speedups.begin(), speedups.end());
+        // What a pass costs: the frame with it minus the frame without it (medians).
+        const double shadow_ms = (t_ref - median(no_shadow)) * 1e3;
+        const double texture_ms = (t_ref - median(no_texture)) * 1e3;
+        const double specular_ms = (t_ref - median(no_specular)) * 1e3;
+        const double tris = double(sc.ball.triangles.size() + sc.ground.triangles.size());
+        std::printf("%-44s %8.0f triangles\n", name, tris);
+        std::printf("  reference:         %9.3f ms per frame (%lld fragments, %lld shaded, %lld texture samples, %lld "
+                    "shadow lookups)\n",
+                    t_ref * 1e3, ref.stats.fragments, ref.stats.shaded, ref.stats.texture_samples, ref.stats.shadow_lookups);
+        std::printf("  tutorial baseline: %9.3f ms per frame (%lld shaded)\n", t_tut * 1e3, tutorial.stats.shaded);
+        std::printf("  speedup %.1fx (rounds %.1fx to %.1fx; goal: at least 10x): %s\n", speedup, lo, hi,
+                    speedup >= 10 ? "met" : "NOT met");
+        std::printf("  what each part costs in the reference: shadow pass and lookups %.3f ms, texture %.3f ms, specular "
+                    "%.3f ms; the frame with none of them %.3f ms\n\n",
+                    shadow_ms, texture_ms, specular_ms, median(bare) * 1e3);
+        goals &= speedup >= 10;
+        char row[400];
+        std::snprintf(row, sizeof row, "| %s | %.0f | %.3f | %.3f | %.1fx | %.1fx to %.1fx | %.3f | %.3f | %.3f | %.3f |\n", name,
+                      tris, t_ref * 1e3, t_tut * 1e3, speedup, lo, hi, shadow_ms, texture_ms, specular_ms, median(bare) * 1e3);
+        table << row;
+    }
+    std::printf("%s\n", goals ? "The speed goal (10x the tutorial baseline) is met on both meshes."
+                              : "The speed goal (10x the tutorial baseline) is NOT met on every mesh.");
+    if (lesson.empty()) return 0;
+
+    std::ifstream in(lesson);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    std::string text = ss.str();
+    const std::string name = std::string("m5-bench-") + RASTER_BUILD_TYPE;
+    const std::string begin = "<!-- " + name, end = "<!-- /" + name + " -->";
+    const auto b = text.find(begin), e = text.find(end);
+    if (!in || b == std::string::npos || e == std::string::npos || e < b) {
+        std::cerr << lesson << ": no " << name << " markers; the table was not written\n";
+        return 1;
+    }
+    const auto body = text.find('\n', b) + 1;
+    text.replace(body, e - body, table.str());
+    std::ofstream(lesson) << text;
+    std::printf("wrote the table into %s\n", lesson.c_str());
+    return 0;
+}
