@@ -1,0 +1,1513 @@
+// Judge half of the milestone-5 checkpoints (trusted: it runs no code under test).
+//
+// Oracles: the pinned rules recomputed here (wrapping, texel fetches, nearest and bilinear
+// samples, the mipmap pyramid, level of detail, the filters, Blinn-Phong, tangent frames and
+// normal maps, the light's matrix and shadow lookups), hand-worked values, the reference's
+// numbers on the same inputs (derivatives, lambda, the light's matrix, stage counts), the
+// expected picture, and pictures computed here from the scene alone by ray casting: the exact
+// nearest-texel picture, a 16x supersampled bilinear truth for the filters, the exact spheres
+// lit with Blinn-Phong, and the exact light state of every pixel (a ray cast to the light).
+#include "m5/judge.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "m5/scenes.h"
+#include "raster/plot.h"
+
+namespace m5cp {
+
+namespace {
+
+using Values = std::map<std::string, double>;
+
+std::string num(double v) {
+    if (std::abs(v) < 1e-12) v = 0;
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+double get(const Values& v, const std::string& key) {
+    const auto it = v.find(key);
+    return it == v.end() ? std::nan("") : it->second;
+}
+
+// a within tol of b, relative to max(1, |b|); NaN only matches NaN, an infinity only itself.
+bool close(double a, double b, double tol) {
+    if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
+    if (std::isinf(a) || std::isinf(b)) return a == b;
+    return std::abs(a - b) <= tol * std::max(1.0, std::abs(b));
+}
+
+Vec3 vec3(const Values& v, const std::string& key) { return {get(v, key + ".x"), get(v, key + ".y"), get(v, key + ".z")}; }
+std::string str(Vec3 p) { return "(" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) + ")"; }
+std::string str(Vec2 p) { return "(" + num(p.x) + ", " + num(p.y) + ")"; }
+std::string str(Color c) { return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")"; }
+bool same3(Vec3 a, Vec3 b, double tol) { return close(a.x, b.x, tol) && close(a.y, b.y, tol) && close(a.z, b.z, tol); }
+Vec3 mul(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+
+Vec3 unit_or_zero(Vec3 v) {
+    const double len = raster::length(v);
+    if (!(len > 0) || !std::isfinite(len)) return {};
+    return v / len;
+}
+
+Color to_color(Vec3 v) {
+    auto ch = [](double x) { return static_cast<std::uint8_t>(std::isnan(x) ? 0 : std::lround(std::clamp(x, 0.0, 255.0))); };
+    return {ch(v.x), ch(v.y), ch(v.z)};
+}
+
+int max_diff(Color a, Color b) { return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)}); }
+
+const char* wrap_name(Wrap w) {
+    switch (w) {
+        case Wrap::kRepeat: return "repeat";
+        case Wrap::kClampToEdge: return "clamp to edge";
+        default: return "mirrored repeat";
+    }
+}
+const char* filter_name(Filter f) {
+    switch (f) {
+        case Filter::kNearest: return "kNearest";
+        case Filter::kBilinear: return "kBilinear";
+        case Filter::kNearestMip: return "kNearestMip";
+        default: return "kTrilinear";
+    }
+}
+
+struct Ctx {
+    const Scene& s;
+    const Values& mine;
+    const Values& ref;
+    cp::Judgement& j;
+    // "TODO 5: message" puts "TODO 5" into the finding's todo.
+    void add(const std::string& topic, const std::string& msg) {
+        std::string todo, text = msg;
+        const auto colon = msg.find(": ");
+        if (msg.rfind("TODO", 0) == 0 && colon != std::string::npos && colon < 20) {
+            todo = msg.substr(0, colon);
+            text = msg.substr(colon + 2);
+        }
+        for (const cp::Finding& f : j.findings) {
+            if (f.topic == topic && f.message == text) return;
+        }
+        j.findings.push_back({topic, text, "", todo});
+    }
+};
+
+// At most this many findings per function in one group, then a count of the rest.
+struct Limited {
+    Ctx& c;
+    std::string what;
+    int shown = 0, more = 0;
+    void add(const std::string& topic, const std::string& msg) {
+        if (shown < 4) {
+            c.add(topic, msg);
+            ++shown;
+        } else {
+            ++more;
+        }
+    }
+    ~Limited() {
+        if (more > 0) c.add(topic_of_rest, "TODO " + todo + ": " + std::to_string(more) + " more case(s) of " + what + " are wrong too");
+    }
+    std::string topic_of_rest = "pipeline", todo = "9";
+};
+
+// ---- the pinned rules, recomputed here ----
+
+double t_wrap(double i, int n, Wrap mode) {
+    if (!std::isfinite(i) || n < 1) return 0;
+    switch (mode) {
+        case Wrap::kRepeat: {
+            double m = std::fmod(i, double(n));
+            if (m < 0) m += n;
+            return m;
+        }
+        case Wrap::kClampToEdge: return std::min(std::max(i, 0.0), double(n - 1));
+        default: {
+            double m = std::fmod(i, 2.0 * n);
+            if (m < 0) m += 2.0 * n;
+            return m < n ? m : 2.0 * n - 1 - m;
+        }
+    }
+}
+
+Vec3 t_fetch(const LevelData& l, double i, double j, Wrap wu, Wrap wv) {
+    if (l.width <= 0 || l.height <= 0 || l.texels.empty()) return {};
+    const double x = t_wrap(i, l.width, wu), y = t_wrap(j, l.height, wv);
+    return l.texels[std::size_t(y) * std::size_t(l.width) + std::size_t(x)];
+}
+
+Vec3 t_nearest(const LevelData& l, Vec2 uv, Wrap wu, Wrap wv) {
+    if (l.texels.empty()) return {};
+    const double x = uv.x * l.width, y = uv.y * l.height;
+    if (!std::isfinite(x) || !std::isfinite(y)) return {};
+    return t_fetch(l, std::floor(x), std::floor(y), wu, wv);
+}
+
+// shift: 0.5 by the rule; 0 is the "texel centers at integers" mistake. swap: the weights swapped.
+Vec3 t_bilinear(const LevelData& l, Vec2 uv, Wrap wu, Wrap wv, double shift = 0.5, bool swap = false) {
+    if (l.texels.empty()) return {};
+    const double x = uv.x * l.width - shift, y = uv.y * l.height - shift;
+    if (!std::isfinite(x) || !std::isfinite(y)) return {};
+    const double i = std::floor(x), j = std::floor(y);
+    double a = x - i, b = y - j;
+    if (swap) {
+        a = 1 - a;
+        b = 1 - b;
+    }
+    return t_fetch(l, i, j, wu, wv) * ((1 - a) * (1 - b)) + t_fetch(l, i + 1, j, wu, wv) * (a * (1 - b)) +
+           t_fetch(l, i, j + 1, wu, wv) * ((1 - a) * b) + t_fetch(l, i + 1, j + 1, wu, wv) * (a * b);
+}
+
+std::vector<LevelData> t_pyramid(const LevelData& base) {
+    std::vector<LevelData> out = {base};
+    if (base.texels.empty()) return out;
+    while (out.back().width > 1 || out.back().height > 1) {
+        const LevelData& k = out.back();
+        LevelData next;
+        next.width = std::max(1, k.width / 2);
+        next.height = std::max(1, k.height / 2);
+        auto at = [&k](int i, int j) {
+            return k.texels[std::size_t(std::min(j, k.height - 1)) * std::size_t(k.width) + std::size_t(std::min(i, k.width - 1))];
+        };
+        for (int j = 0; j < next.height; ++j) {
+            for (int i = 0; i < next.width; ++i) {
+                next.texels.push_back((at(2 * i, 2 * j) + at(2 * i + 1, 2 * j) + at(2 * i, 2 * j + 1) + at(2 * i + 1, 2 * j + 1)) / 4);
+            }
+        }
+        out.push_back(next);
+    }
+    return out;
+}
+
+struct Derivs {
+    double du_dx = 0, dv_dx = 0, du_dy = 0, dv_dy = 0;
+};
+// perspective false: the screen-space (affine) derivatives, the mistake of ignoring w.
+Derivs t_derivatives(const LodCase& c, bool perspective = true) {
+    const auto& s = c.screen;
+    const double area = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[1].y - s[0].y) * (s[2].x - s[0].x);
+    if (area == 0 || !std::isfinite(area)) return {};
+    double l[3], lx[3], ly[3];
+    for (int i = 0; i < 3; ++i) {
+        const Vec3 a = s[std::size_t((i + 1) % 3)], b = s[std::size_t((i + 2) % 3)];
+        l[i] = ((a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x)) / area;
+        lx[i] = (a.y - b.y) / area;
+        ly[i] = (b.x - a.x) / area;
+    }
+    double A[2] = {0, 0}, Ax[2] = {0, 0}, Ay[2] = {0, 0}, B = 0, Bx = 0, By = 0;
+    for (int i = 0; i < 3; ++i) {
+        const double q = perspective ? 1 / c.w[std::size_t(i)] : 1;
+        const double uv[2] = {c.uv[std::size_t(i)].x, c.uv[std::size_t(i)].y};
+        for (int k = 0; k < 2; ++k) {
+            A[k] += l[i] * uv[k] * q;
+            Ax[k] += lx[i] * uv[k] * q;
+            Ay[k] += ly[i] * uv[k] * q;
+        }
+        B += l[i] * q;
+        Bx += lx[i] * q;
+        By += ly[i] * q;
+    }
+    if (!(B > 0) || !std::isfinite(B)) return {};
+    Derivs d;
+    d.du_dx = (Ax[0] * B - A[0] * Bx) / (B * B);
+    d.dv_dx = (Ax[1] * B - A[1] * Bx) / (B * B);
+    d.du_dy = (Ay[0] * B - A[0] * By) / (B * B);
+    d.dv_dy = (Ay[1] * B - A[1] * By) / (B * B);
+    return d;
+}
+
+double t_lambda(double du_dx, double dv_dx, double du_dy, double dv_dy, double w, double h) {
+    const double rho = std::max(std::sqrt((w * du_dx) * (w * du_dx) + (h * dv_dx) * (h * dv_dx)),
+                                std::sqrt((w * du_dy) * (w * du_dy) + (h * dv_dy) * (h * dv_dy)));
+    return std::log2(rho);
+}
+
+Vec3 t_sample(const std::vector<LevelData>& pyr, Vec2 uv, double lambda, Filter f, Wrap wu, Wrap wv, bool blend = true) {
+    if (pyr.empty()) return {};
+    if (f == Filter::kNearest) return t_nearest(pyr[0], uv, wu, wv);
+    if (f == Filter::kBilinear || !(lambda > 0)) return t_bilinear(pyr[0], uv, wu, wv);
+    const double top = double(pyr.size() - 1), lam = std::min(lambda, top);
+    if (f == Filter::kNearestMip) return t_bilinear(pyr[std::size_t(std::floor(lam + 0.5))], uv, wu, wv);
+    const double k = std::floor(lam), frac = lam - k;
+    const std::size_t k0 = std::size_t(k), k1 = std::min(k0 + 1, pyr.size() - 1);
+    const Vec3 a = t_bilinear(pyr[k0], uv, wu, wv), b = t_bilinear(pyr[k1], uv, wu, wv);
+    if (!blend) return a;
+    return a * (1 - frac) + b * frac;
+}
+
+// unnormalized_h: the mistake of H = L + V without normalizing; behind: specular even when c <= 0.
+Vec3 t_phong(const PhongCase& k, bool unnormalized_h = false, bool behind = false) {
+    const Vec3 n = unit_or_zero(k.normal), v = unit_or_zero(k.to_eye), l = unit_or_zero(k.to_light);
+    if (n == Vec3{} || v == Vec3{} || l == Vec3{}) return {};
+    const double c = raster::dot(n, l);
+    const Vec3 h = unnormalized_h ? l + v : unit_or_zero(l + v);
+    const double s = std::pow(std::max(0.0, raster::dot(n, h)), k.shininess);
+    if (!(c > 0)) return behind ? mul(k.specular, k.intensity) * s : Vec3{};
+    return mul(k.base, k.intensity) * c + mul(k.specular, k.intensity) * s;
+}
+
+struct Frame {
+    Vec3 t, b;
+    bool valid = false;
+};
+Frame t_frame(const FrameCase& c) {
+    const Vec3 e1 = c.p[1] - c.p[0], e2 = c.p[2] - c.p[0];
+    const double du1 = c.uv[1].x - c.uv[0].x, dv1 = c.uv[1].y - c.uv[0].y;
+    const double du2 = c.uv[2].x - c.uv[0].x, dv2 = c.uv[2].y - c.uv[0].y;
+    const double r = du1 * dv2 - du2 * dv1;
+    if (r == 0 || !std::isfinite(r)) return {};
+    const Vec3 t = (e1 * dv2 - e2 * dv1) / r, b = (e2 * du1 - e1 * du2) / r;
+    if (!raster::is_finite(t) || !raster::is_finite(b)) return {};
+    return {t, b, true};
+}
+
+// mode 0: the rule; 1: the texel read as t / 255 (no 2 t - 1); 2: T and B used without
+// making them orthonormal (each only normalized).
+Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
+    const Vec3 n = c.n;
+    if (!c.valid || !raster::is_finite(n) || !raster::is_finite(c.texel) || !raster::is_finite(c.tangent) ||
+        !raster::is_finite(c.bitangent)) {
+        return n;
+    }
+    const Vec3 tp = mode == 2 ? unit_or_zero(c.tangent) : unit_or_zero(c.tangent - n * raster::dot(n, c.tangent));
+    if (tp == Vec3{}) return n;
+    Vec3 bp = raster::cross(n, tp);
+    if (raster::dot(bp, c.bitangent) < 0) bp = -bp;
+    if (mode == 2) bp = unit_or_zero(c.bitangent);
+    const Vec3 m = mode == 1 ? c.texel / 255 : c.texel * (2.0 / 255) - Vec3{1, 1, 1};
+    const Vec3 r = unit_or_zero(tp * m.x + bp * m.y + n * m.z);
+    return r == Vec3{} ? n : r;
+}
+
+struct M4 {
+    double m[4][4] = {};
+};
+M4 mul(const M4& a, const M4& b) {
+    M4 r;
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            for (int k = 0; k < 4; ++k) r.m[i][j] += a.m[i][k] * b.m[k][j];
+        }
+    }
+    return r;
+}
+Vec4 mul(const M4& a, Vec4 v) {
+    const double in[4] = {v.x, v.y, v.z, v.w};
+    double out[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i) {
+        for (int k = 0; k < 4; ++k) out[i] += a.m[i][k] * in[k];
+    }
+    return {out[0], out[1], out[2], out[3]};
+}
+M4 t_look_at(Vec3 eye, Vec3 target, Vec3 up) {
+    const Vec3 f = unit_or_zero(target - eye), r = unit_or_zero(raster::cross(f, up)), u = raster::cross(r, f);
+    M4 m;
+    const Vec3 rows[3] = {r, u, -f};
+    for (int i = 0; i < 3; ++i) {
+        m.m[i][0] = rows[i].x;
+        m.m[i][1] = rows[i].y;
+        m.m[i][2] = rows[i].z;
+        m.m[i][3] = -raster::dot(rows[i], eye);
+    }
+    m.m[3][3] = 1;
+    return m;
+}
+M4 t_ortho(double l, double r, double b, double t, double n, double f) {
+    M4 m;
+    m.m[0][0] = 2 / (r - l);
+    m.m[0][3] = -(r + l) / (r - l);
+    m.m[1][1] = 2 / (t - b);
+    m.m[1][3] = -(t + b) / (t - b);
+    m.m[2][2] = -2 / (f - n);
+    m.m[2][3] = -(f + n) / (f - n);
+    m.m[3][3] = 1;
+    return m;
+}
+// flip: the eye on the wrong side (center + 2r d), a light looking against its direction.
+M4 t_light(Vec3 direction, Vec3 center, double r, bool flip = false) {
+    const Vec3 d = unit_or_zero(direction);
+    if (d == Vec3{} || !raster::is_finite(center) || !std::isfinite(r)) return {};
+    const Vec3 up = std::abs(d.y) > 0.99 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    return mul(t_ortho(-r, r, -r, r, r, 3 * r), t_look_at(center + d * (flip ? 2 * r : -2 * r), center, up));
+}
+
+// The shadow factor on the tiny map. reversed: the comparison the wrong way round.
+double t_shadow(const TinyMap& map, const ShadowCase& c, bool reversed = false) {
+    const M4 m = t_light(map.direction, map.center, map.radius);
+    const Vec4 clip = mul(m, Vec4{c.p.x, c.p.y, c.p.z, 1});
+    const double res = map.resolution;
+    const double x = (clip.x / clip.w + 1) / 2 * res, y = (1 - clip.y / clip.w) / 2 * res, z = clip.z / clip.w;
+    const double d = (z + 1) / 2;
+    const double cos_t = raster::dot(c.n, -unit_or_zero(map.direction));
+    const double tan_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t)) / cos_t;
+    const double bias = c.constant_bias + c.slope_bias * std::min(tan_t, 10.0);
+    auto lit = [&](double col, double row) {
+        if (col < 0 || row < 0 || col >= res || row >= res) return 1.0;
+        const std::uint32_t key = map.keys[std::size_t(row) * std::size_t(map.resolution) + std::size_t(col)];
+        if (key == 0xFFFFFFFFu) return 1.0;
+        const double stored = std::bit_cast<float>(key);
+        const bool shadowed = reversed ? d - bias / (2 * map.radius) < stored : d - bias / (2 * map.radius) > stored;
+        return shadowed ? 0.0 : 1.0;
+    };
+    const double col = std::floor(x), row = std::floor(y);
+    if (!c.pcf) return lit(col, row);
+    double sum = 0;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) sum += lit(col + dx, row + dy);
+    }
+    return sum / 9;
+}
+
+// ---- the number groups ----
+
+void judge_wrap(Ctx& c) {
+    const Values& v = c.mine;
+    {
+        Limited out{c, "wrap_index", 0, 0, "wrap", "1"};
+        const auto cases = wrap_cases();
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            const auto& k = cases[i];
+            const double mine = get(v, "wrap" + std::to_string(i)), want = t_wrap(k.i, k.n, k.mode);
+            if (mine == want) continue;
+            std::string why;
+            const double trunc = std::fmod(k.i, double(k.mode == Wrap::kMirroredRepeat ? 2 * k.n : k.n));
+            if (!std::isfinite(k.i)) {
+                why = ": a non-finite index gives 0 (never a crash, never an index out of range)";
+            } else if (k.i < 0 && k.mode != Wrap::kClampToEdge && (mine == trunc || mine == -trunc)) {
+                why = ": std::fmod (and %) truncate toward zero and keep the sign of i, so -1 mod n is -1; add n (2n "
+                      "for mirrored repeat) when the result is negative, so -1 becomes n - 1";
+            } else if (std::abs(k.i) > 1e15) {
+                why = ": a huge index must wrap exactly: std::fmod is exact for any finite double (a cast to an "
+                      "integer type overflows)";
+            }
+            out.add("wrap", "TODO 1: wrap_index(" + num(k.i) + ", " + std::to_string(k.n) + ", " + wrap_name(k.mode) +
+                                ") gave " + num(mine) + ", expected " + num(want) + why);
+        }
+    }
+    Limited out{c, "fetch", 0, 0, "wrap", "1"};
+    const auto cases = fetch_cases();
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const auto& k = cases[i];
+        const LevelData l = sample_level(k.level);
+        const Vec3 mine = vec3(v, "fetch" + std::to_string(i)), want = t_fetch(l, k.i, k.j, k.wu, k.wv);
+        if (same3(mine, want, 1e-12)) continue;
+        out.add("wrap", "TODO 1: fetch on a " + std::to_string(l.width) + "x" + std::to_string(l.height) + " level at (" + num(k.i) +
+                            ", " + num(k.j) + ") with u " + wrap_name(k.wu) + " and v " + wrap_name(k.wv) + " gave " + str(mine) +
+                            ", expected " + str(want) +
+                            (l.texels.empty() ? " (a level with no texels is black)"
+                                              : " (texel (" + num(t_wrap(k.i, l.width, k.wu)) + ", " + num(t_wrap(k.j, l.height, k.wv)) +
+                                                    "), at index j * width + i)"));
+    }
+}
+
+void judge_sampling(Ctx& c) {
+    const Values& v = c.mine;
+    const auto cases = sample_cases();
+    Limited nearest{c, "sample_nearest", 0, 0, "nearest", "2"};
+    Limited bilinear{c, "sample_bilinear", 0, 0, "bilinear", "2"};
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const auto& k = cases[i];
+        const LevelData l = sample_level(k.level);
+        const std::string inputs = "uv " + str(k.uv) + " on a " + std::to_string(l.width) + "x" + std::to_string(l.height) +
+                                   " level, u " + wrap_name(k.wu) + ", v " + wrap_name(k.wv);
+        const bool bad_uv = !std::isfinite(k.uv.x * l.width) || !std::isfinite(k.uv.y * l.height);
+        {
+            const Vec3 mine = vec3(v, "nearest" + std::to_string(i)), want = t_nearest(l, k.uv, k.wu, k.wv);
+            if (!same3(mine, want, 1e-12)) {
+                std::string why, topic = "nearest";
+                if (bad_uv) {
+                    topic = "non-finite uv";
+                    why = ": a NaN or infinite uv (or a u * w that overflows) samples black";
+                } else if (same3(mine, t_fetch(l, std::round(k.uv.x * l.width), std::round(k.uv.y * l.height), k.wu, k.wv), 1e-12)) {
+                    topic = "texel centers";
+                    why = ": that is texel (round(u * w), round(v * h)); texel i COVERS [i, i + 1) in texel units, so "
+                          "nearest reads floor(u * w)";
+                }
+                nearest.add(topic, "TODO 2: sample_nearest at " + inputs + " gave " + str(mine) + ", expected " + str(want) + why);
+            }
+        }
+        const Vec3 mine = vec3(v, "bilinear" + std::to_string(i)), want = t_bilinear(l, k.uv, k.wu, k.wv);
+        if (same3(mine, want, 1e-9)) continue;
+        std::string why, topic = "bilinear";
+        if (bad_uv) {
+            topic = "non-finite uv";
+            why = ": a NaN or infinite uv (or a u * w that overflows) samples black";
+        } else if (same3(mine, t_bilinear(l, k.uv, k.wu, k.wv, 0), 1e-9)) {
+            topic = "texel centers";
+            why = ": that is the blend with texel centers at INTEGERS; they are at half-integers, so take x' = u * w - "
+                  "0.5 before floor (at a texel's center the sample is that texel exactly)";
+        } else if (same3(mine, t_bilinear(l, k.uv, k.wu, k.wv, 0.5, true), 1e-9)) {
+            why = ": the weights are swapped: texel i gets (1 - a), texel i + 1 gets a, where a = x' - floor(x')";
+        }
+        bilinear.add(topic, "TODO 2: sample_bilinear at " + inputs + " gave " + str(mine) + ", expected " + str(want) + why);
+    }
+}
+
+std::string size_name(const LevelData& l) { return std::to_string(l.width) + "x" + std::to_string(l.height); }
+
+void judge_mipmaps(Ctx& c) {
+    const Values& v = c.mine;
+    const auto bases = mip_bases();
+    for (std::size_t b = 0; b < bases.size(); ++b) {
+        const auto want = t_pyramid(bases[b]);
+        const std::string key = "mip" + std::to_string(b), name = "the " + size_name(bases[b]) + " texture";
+        std::string sizes;
+        for (const LevelData& l : want) sizes += (sizes.empty() ? "" : ", ") + size_name(l);
+        const double levels = get(v, key + ".levels");
+        if (levels != double(want.size())) {
+            c.add("mipmap", "TODO 3: build_mipmaps on " + name + " made " + num(levels) + " levels, expected " +
+                                std::to_string(want.size()) + " (" + sizes + "): each level max(1, floor(w / 2)) by max(1, "
+                                "floor(h / 2)), down to and including 1x1");
+            continue;
+        }
+        if (get(v, key + ".mipmapped") != 1) c.add("mipmap", "TODO 3: build_mipmaps must set texture.mipmapped");
+        if (get(v, key + ".again.levels") != double(want.size())) {
+            c.add("mipmap", "TODO 3: build_mipmaps called a second time on " + name + " left " + num(get(v, key + ".again.levels")) +
+                                " levels: it replaces the levels above 0, it does not add more");
+        }
+        bool reported = false;
+        for (std::size_t k = 0; k < want.size() && !reported; ++k) {
+            const std::string lk = key + ".L" + std::to_string(k);
+            const LevelData& l = want[k];
+            if (get(v, lk + ".w") != l.width || get(v, lk + ".h") != l.height || get(v, lk + ".n") != double(l.texels.size())) {
+                c.add("mipmap", "TODO 3: level " + std::to_string(k) + " of " + name + " is " + num(get(v, lk + ".w")) + "x" +
+                                    num(get(v, lk + ".h")) + " with " + num(get(v, lk + ".n")) + " texels, expected " + size_name(l) +
+                                    " (the pyramid: " + sizes + ")");
+                reported = true;
+                break;
+            }
+            for (std::size_t i = 0; i < l.texels.size() && i < 64; ++i) {
+                const Vec3 mine = vec3(v, lk + ".t" + std::to_string(i));
+                if (same3(mine, l.texels[i], 1e-9)) continue;
+                const int ti = int(i) % l.width, tj = int(i) / l.width;
+                std::string msg = "TODO 3: level " + std::to_string(k) + " (" + size_name(l) + ") of " + name + ": texel (" +
+                                  std::to_string(ti) + ", " + std::to_string(tj) + ") is " + str(mine) + ", expected " + str(l.texels[i]);
+                if (k == 0) {
+                    msg += ": level 0 is the texture itself and stays as it is";
+                } else {
+                    const LevelData& up = want[k - 1];
+                    msg += ", the plain average of level " + std::to_string(k - 1) + "'s texels (" + std::to_string(2 * ti) + ", " +
+                           std::to_string(2 * tj) + ") to (" + std::to_string(2 * ti + 1) + ", " + std::to_string(2 * tj + 1) + ")";
+                    if ((up.width > 1 && up.width % 2 == 1) || (up.height > 1 && up.height % 2 == 1)) {
+                        msg += "; level " + std::to_string(k - 1) + " is " + size_name(up) +
+                               ", and an odd last row or column is DROPPED (a 5-wide level makes a 2-wide one from its texels 0 "
+                               "to 3)";
+                    } else if (up.width == 1 || up.height == 1) {
+                        msg += "; a side of level " + std::to_string(k - 1) + " is 1 texel, so the index past it is clamped to it";
+                    }
+                }
+                c.add("mipmap", msg);
+                reported = true;
+                break;
+            }
+        }
+    }
+    if (get(v, "empty.levels") != 1 || get(v, "empty.mipmapped") != 0) {
+        c.add("mipmap", "TODO 3: build_mipmaps on a texture with no texels must leave it as it is (1 level, mipmapped "
+                        "false); it made " + num(get(v, "empty.levels")) + " levels");
+    }
+    if (get(v, "none.levels") != 0) {
+        c.add("mipmap", "TODO 3: build_mipmaps on a texture with no levels at all must leave it as it is");
+    }
+}
+
+void judge_lod(Ctx& c) {
+    const Values& v = c.mine;
+    const auto cases = lod_cases();
+    Limited out{c, "uv_derivatives", 0, 0, "level of detail", "4"};
+    // Hand-worked: case 0 (1/100 exactly), cases 4 and 5 (all zero).
+    const std::map<std::size_t, Derivs> hand = {{0, {0.01, 0, 0, 0.01}}, {4, {}}, {5, {}}};
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const auto& k = cases[i];
+        const std::string key = "lod" + std::to_string(i);
+        const char* names[4] = {".du_dx", ".dv_dx", ".du_dy", ".dv_dy"};
+        double want[4], mine[4];
+        const auto h = hand.find(i);
+        for (int n = 0; n < 4; ++n) {
+            mine[n] = get(v, key + names[n]);
+            want[n] = get(c.ref, key + names[n]);
+        }
+        if (h != hand.end()) {
+            const double hw[4] = {h->second.du_dx, h->second.dv_dx, h->second.du_dy, h->second.dv_dy};
+            std::copy(hw, hw + 4, want);
+        }
+        double scale = 0;
+        for (double w : want) scale = std::max(scale, std::isfinite(w) ? std::abs(w) : 0.0);
+        bool ok = true;
+        for (int n = 0; n < 4; ++n) ok &= std::abs(mine[n] - want[n]) <= 1e-6 * scale || mine[n] == want[n];
+        if (ok) continue;
+        std::string inputs;
+        for (int n = 0; n < 3; ++n) {
+            inputs += std::string(n ? "; " : "") + "(" + num(k.screen[std::size_t(n)].x) + ", " + num(k.screen[std::size_t(n)].y) +
+                      ") w " + num(k.w[std::size_t(n)]) + " uv " + str(k.uv[std::size_t(n)]);
+        }
+        std::string why;
+        const Derivs affine = t_derivatives(k, false);
+        const double aff[4] = {affine.du_dx, affine.dv_dx, affine.du_dy, affine.dv_dy};
+        bool is_affine = scale > 0;
+        for (int n = 0; n < 4; ++n) is_affine &= std::abs(mine[n] - aff[n]) <= 1e-6 * scale;
+        if (scale == 0) {
+            why = ": a triangle of zero area, or a point where B = sum l_i / w_i is not > 0 and finite, gives all zero";
+        } else if (is_affine) {
+            why = ": those are the derivatives of the SCREEN-space interpolation; uv is A / B (perspective-correct), "
+                  "so du/dx = (A_x B - A B_x) / B^2";
+        } else {
+            why = " (the exact derivative of A / B: du/dx = (A_x B - A B_x) / B^2, with A = sum l_i u_i / w_i, B = "
+                  "sum l_i / w_i and l_i the screen weights)";
+        }
+        out.add("level of detail", "TODO 4: uv_derivatives of the triangle " + inputs + " at (" + num(k.x) + ", " + num(k.y) +
+                                       ") gave du/dx " + num(mine[0]) + ", dv/dx " + num(mine[1]) + ", du/dy " + num(mine[2]) +
+                                       ", dv/dy " + num(mine[3]) + "; expected " + num(want[0]) + ", " + num(want[1]) + ", " +
+                                       num(want[2]) + ", " + num(want[3]) + why);
+    }
+    const auto lambdas = lambda_cases();
+    Limited lo{c, "level_of_detail", 0, 0, "level of detail", "4"};
+    for (std::size_t i = 0; i < lambdas.size(); ++i) {
+        const auto& k = lambdas[i];
+        const double mine = get(v, "lambda" + std::to_string(i));
+        const double want = t_lambda(k.du_dx, k.dv_dx, k.du_dy, k.dv_dy, k.width, k.height);
+        if (close(mine, want, 1e-6) || (std::isinf(want) && mine == want)) continue;
+        std::string why;
+        if (close(mine, t_lambda(k.du_dx, k.dv_dx, k.du_dy, k.dv_dy, 1, 1), 1e-6)) {
+            why = ": that is rho in uv units per pixel; rho is in TEXEL units: multiply du by the width and dv by the "
+                  "height of level 0 first";
+        } else if (std::isfinite(want) && close(mine, want * std::log(2.0), 1e-6)) {
+            why = ": lambda is log2(rho), not the natural logarithm";
+        } else if (std::isinf(want)) {
+            why = ": rho 0 gives log2(0) = -infinity (not clamped here)";
+        }
+        lo.add("level of detail", "TODO 4: level_of_detail(du/dx " + num(k.du_dx) + ", dv/dx " + num(k.dv_dx) + ", du/dy " +
+                                      num(k.du_dy) + ", dv/dy " + num(k.dv_dy) + ", " + std::to_string(k.width) + "x" +
+                                      std::to_string(k.height) + ") gave " + num(mine) + ", expected " + num(want) + why);
+    }
+}
+
+void judge_filter(Ctx& c) {
+    const Values& v = c.mine;
+    const auto bases = mip_bases();
+    const auto cases = filter_cases();
+    Limited out{c, "sample", 0, 0, "filter", "4"};
+    bool lo = false, hi = false;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const auto& k = cases[i];
+        if (i == 0 || k.base != cases[i - 1].base || k.filter != cases[i - 1].filter) lo = hi = false;
+        const auto pyr = t_pyramid(bases[std::size_t(k.base)]);
+        const bool mip = k.filter == Filter::kNearestMip || k.filter == Filter::kTrilinear;
+        // Whether a level above 0 is read (the pyramid must exist), and whether lambda > 0 (it may).
+        if (mip && k.lambda > 0) {
+            hi = true;
+            const double lam = std::min(k.lambda, double(pyr.size() - 1));
+            lo |= pyr.size() > 1 && (k.filter == Filter::kTrilinear || std::floor(lam + 0.5) >= 1);
+        }
+        const std::string key = "filter" + std::to_string(i);
+        const Vec3 mine = vec3(v, key), want = t_sample(pyr, k.uv, k.lambda, k.filter, Wrap::kRepeat, Wrap::kRepeat);
+        const std::string inputs = "sample(" + size_name(bases[std::size_t(k.base)]) + " texture, uv " + str(k.uv) + ", lambda " +
+                                   num(k.lambda) + ", " + filter_name(k.filter) + ")";
+        if (!same3(mine, want, 1e-9)) {
+            std::string why, topic = "filter";
+            const double top = double(pyr.size() - 1);
+            if (!mip) {
+                why = ": kNearest and kBilinear read level 0 only, whatever lambda is";
+            } else if (!(k.lambda > 0)) {
+                why = ": lambda <= 0 (or NaN) magnifies: bilinear on level 0";
+            } else if (k.lambda > top) {
+                topic = "lambda clamp";
+                why = ": lambda is clamped to [0, L - 1] = [0, " + num(top) + "], so the last level (" +
+                      size_name(pyr.back()) + ") is read";
+            } else if (k.filter == Filter::kTrilinear &&
+                       same3(mine, t_sample(pyr, k.uv, k.lambda, k.filter, Wrap::kRepeat, Wrap::kRepeat, false), 1e-9)) {
+                topic = "trilinear";
+                why = ": that is level floor(lambda) alone; trilinear BLENDS the bilinear samples of levels floor(lambda) "
+                      "and floor(lambda) + 1 by the fraction of lambda";
+            } else if (k.filter == Filter::kNearestMip) {
+                why = ": nearest-mip reads level floor(lambda + 0.5) (here " + num(std::floor(std::min(k.lambda, top) + 0.5)) +
+                      ") bilinearly";
+            } else {
+                why = ": trilinear: (1 - f) bilinear(level floor(lambda)) + f bilinear(level floor(lambda) + 1), f the "
+                      "fraction of lambda, the last level when there is no next";
+            }
+            out.add(topic, "TODO 4: " + inputs + " gave " + str(mine) + ", expected " + str(want) + why);
+        }
+        const double builds = get(v, key + ".builds");
+        const double want_lo = lo ? 1 : 0, want_hi = hi ? 1 : 0;
+        if (!(builds >= want_lo && builds <= want_hi)) {
+            std::string why;
+            if (builds > 1) {
+                why = ": the pyramid is built once per texture (build it only when texture.mipmapped is false)";
+            } else if (builds > want_hi) {
+                why = ": this and every earlier call on this texture had lambda <= 0 or a filter without mipmaps, so no "
+                      "level above 0 was needed and no pyramid may be built";
+            } else {
+                why = ": a mip filter that needs a level above 0 builds the pyramid first (build_mipmaps) and adds 1 to "
+                      "*mipmap_builds";
+            }
+            out.add("mipmap builds", "TODO 4: after " + inputs + " (and the calls before it on the same texture) the count of "
+                                     "pyramids built is " + num(builds) + ", expected " + num(want_lo) + why);
+        }
+    }
+    const Vec3 null_sample = vec3(v, "filter.null");
+    const auto pyr = t_pyramid(bases[0]);
+    if (!same3(null_sample, t_sample(pyr, {0.3, 0.7}, 1.5, Filter::kTrilinear, Wrap::kRepeat, Wrap::kRepeat), 1e-9)) {
+        c.add("filter", "TODO 4: sample() with mipmap_builds == nullptr (uv (0.3, 0.7), lambda 1.5, kTrilinear) gave " +
+                            str(null_sample) + ": it must still build and sample, only not count");
+    }
+}
+
+void judge_phong(Ctx& c) {
+    const Values& v = c.mine;
+    const auto cases = phong_cases();
+    Limited out{c, "blinn_phong", 0, 0, "specular", "6"};
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const auto& k = cases[i];
+        const Vec3 mine = vec3(v, "phong" + std::to_string(i)), want = t_phong(k);
+        if (same3(mine, want, 1e-9)) continue;
+        std::string why, topic = "specular";
+        const double cl = raster::dot(unit_or_zero(k.normal), unit_or_zero(k.to_light));
+        if (same3(mine, t_phong(k, true), 1e-9)) {
+            topic = "halfway vector";
+            why = ": H = L + V must be NORMALIZED before the dot product (its length is up to 2, and raised to the "
+                  "shininess that is far too bright)";
+        } else if (!(cl > 0) && !same3(mine, Vec3{}, 1e-12)) {
+            topic = "light behind";
+            why = ": dot(N, L) = " + num(cl) + " <= 0, so this light adds NOTHING: no diffuse and no specular either";
+        } else if (same3(mine, Vec3{}, 1e-12)) {
+            why = ": blinn_phong returned nothing";
+        } else if (raster::length(k.normal) != 1 || raster::length(k.to_eye) != 1 || raster::length(k.to_light) != 1) {
+            why = ": normalize N, V and L first (here they are not of length 1; a zero one makes the light add nothing)";
+        }
+        out.add(topic, "TODO 6: blinn_phong(base " + str(k.base) + ", specular " + str(k.specular) + ", shininess " +
+                           num(k.shininess) + ", N " + str(k.normal) + ", V " + str(k.to_eye) + ", L " + str(k.to_light) +
+                           ", I " + str(k.intensity) + ") gave " + str(mine) + ", expected " + str(want) + why);
+    }
+}
+
+void judge_tangent(Ctx& c) {
+    const Values& v = c.mine;
+    {
+        const auto cases = frame_cases();
+        Limited out{c, "tangent_frame", 0, 0, "tangent frame", "7"};
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            const auto& k = cases[i];
+            const std::string key = "frame" + std::to_string(i);
+            const Frame want = t_frame(k);
+            const bool valid = get(v, key + ".valid") == 1;
+            const Vec3 t = vec3(v, key + ".t"), b = vec3(v, key + ".b");
+            if (valid == want.valid && (!valid || (same3(t, want.t, 1e-9) && same3(b, want.b, 1e-9)))) continue;
+            const std::string inputs = "tangent_frame(p " + str(k.p[0]) + ", " + str(k.p[1]) + ", " + str(k.p[2]) + "; uv " +
+                                       str(k.uv[0]) + ", " + str(k.uv[1]) + ", " + str(k.uv[2]) + ")";
+            if (valid != want.valid) {
+                out.add("tangent frame", "TODO 7: " + inputs + " is " + (valid ? "" : "not ") + "valid, expected " +
+                                             (want.valid ? "valid" : "NOT valid: r = du1 dv2 - du2 dv1 is 0 or not finite "
+                                                                     "(or T or B is not finite), so there is no tangent frame"));
+            } else {
+                out.add("tangent frame", "TODO 7: " + inputs + " gave T " + str(t) + ", B " + str(b) + "; expected T " + str(want.t) +
+                                             ", B " + str(want.b) + " (T = (e1 dv2 - e2 dv1) / r, B = (e2 du1 - e1 du2) / r)");
+            }
+        }
+    }
+    const auto cases = perturb_cases();
+    Limited out{c, "perturb_normal", 0, 0, "normal map", "7"};
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const auto& k = cases[i];
+        const Vec3 mine = vec3(v, "perturb" + std::to_string(i)), want = t_perturb(k);
+        if (same3(mine, want, 1e-9)) continue;
+        std::string why;
+        if (same3(mine, t_perturb(k, 1), 1e-9)) {
+            why = ": the texel was read as t / 255 in [0, 1]; a normal-map texel is 2 t / 255 - 1, in [-1, 1] (128 "
+                  "means 0)";
+        } else if (same3(mine, t_perturb(k, 2), 1e-9)) {
+            why = ": T and B were used as they are; make the frame orthonormal: T' = normalize(T - n dot(n, T)), "
+                  "B' = cross(n, T') (negated when it points away from B)";
+        } else if (!k.valid || same3(want, k.n, 0)) {
+            why = ": here the normal must come back unchanged (no valid frame, T along n, a zero or non-finite vector)";
+        }
+        out.add("normal map", "TODO 7: perturb_normal(T " + str(k.tangent) + ", B " + str(k.bitangent) + ", valid " +
+                                  (k.valid ? "true" : "false") + ", n " + str(k.n) + ", texel " + str(k.texel) + ") gave " +
+                                  str(mine) + ", expected " + str(want) + why);
+    }
+}
+
+void judge_shadow(Ctx& c) {
+    const Values& v = c.mine;
+    {
+        const auto cases = light_matrix_cases();
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            const auto& k = cases[i];
+            const M4 want = t_light(k.direction, k.center, k.radius), flipped = t_light(k.direction, k.center, k.radius, true);
+            bool ok = true, ref_ok = true, flip = true;
+            M4 mine;
+            for (int r = 0; r < 4; ++r) {
+                for (int col = 0; col < 4; ++col) {
+                    const std::string e = "light" + std::to_string(i) + "." + std::to_string(r) + std::to_string(col);
+                    mine.m[r][col] = get(v, e);
+                    ok &= close(mine.m[r][col], want.m[r][col], 1e-9);
+                    ref_ok &= close(mine.m[r][col], get(c.ref, e), 1e-9);
+                    flip &= close(mine.m[r][col], flipped.m[r][col], 1e-9);
+                }
+            }
+            if (ok && ref_ok) continue;
+            const std::string inputs = "light_view_projection(direction " + str(k.direction) + ", center " + str(k.center) +
+                                       ", radius " + num(k.radius) + ")";
+            std::string why;
+            const Vec3 d = unit_or_zero(k.direction);
+            if (d == Vec3{} || !raster::is_finite(k.direction)) {
+                why = " is not the zero matrix: a zero or non-finite direction gives the zero matrix";
+            } else if (flip) {
+                why = " looks AGAINST the light: the eye is center - 2r * normalize(direction), so the light looks along "
+                      "the direction its rays travel";
+            } else {
+                const Vec4 at_center = mul(mine, Vec4{k.center.x, k.center.y, k.center.z, 1});
+                const Vec3 near_point = k.center - d * k.radius;
+                const Vec4 at_near = mul(mine, Vec4{near_point.x, near_point.y, near_point.z, 1});
+                if (!close(at_center.x, 0, 1e-9) || !close(at_center.y, 0, 1e-9) || !close(at_center.z, 0, 1e-9)) {
+                    why = " does not take the center to the middle of the box: it gives " + str(xyz(at_center)) +
+                          ", expected (0, 0, 0) (the eye 2r before the center, near r and far 3r)";
+                } else if (!close(at_near.z, -1, 1e-9)) {
+                    why = " puts the point r before the center (toward the light) at z_ndc " + num(at_near.z) +
+                          ", expected -1: orthographic(-r, r, -r, r, r, 3r)";
+                } else {
+                    why = " differs from orthographic(-r, r, -r, r, r, 3r) * look_at(eye, center, up): up is (0, 1, 0), "
+                          "or (1, 0, 0) when |normalize(direction).y| > 0.99";
+                }
+            }
+            c.add("light matrix", "TODO 8: " + inputs + why);
+        }
+    }
+    const TinyMap map = tiny_map();
+    const auto cases = shadow_cases();
+    Limited out{c, "shadow_factor", 0, 0, "shadow", "8"};
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const auto& k = cases[i];
+        const double mine = get(v, "shadow" + std::to_string(i)), want = t_shadow(map, k);
+        if (close(mine, want, 1e-9)) continue;
+        std::string why, topic = k.pcf ? "pcf" : "shadow";
+        if (close(mine, t_shadow(map, k, true), 1e-9) && !k.pcf) {
+            why = ": the comparison is reversed: a point is in shadow when it is FARTHER from the light than the stored "
+                  "depth, d - bias / (2r) > stored";
+        } else if (i == 2) {
+            topic = "shadow bias";
+            why = ": the point is 0.001 below the floor's stored depth; the constant bias (0.02 world units, 0.02 / (2r) in "
+                  "depth) keeps it lit: without a bias a surface shadows itself (acne)";
+        } else if (i == 3) {
+            topic = "shadow bias";
+            why = ": here c = dot(N, L) = 0.2, so tan(theta) = sqrt(1 - c^2) / c = 4.9 and the bias is 0.02 + 0.02 * 4.9 = "
+                  "0.118 world units: that slope term keeps it lit";
+        } else if (i == 4) {
+            topic = "shadow bias";
+            why = ": here c = 0.01, tan(theta) = 99.99 is capped at 10: bias = 0.02 + 0.02 * 10 = 0.22 world units, and the "
+                  "point 0.3 below the floor is in shadow";
+        } else if (k.pcf) {
+            why = ": with PCF the factor is the lit fraction of the 3x3 texels around the one p falls in (a texel outside "
+                  "the map, or never drawn, is lit)";
+        } else {
+            why = ": the texel is column floor(x), row floor(y) of m3::to_screen(light * p) on a resolution^2 map, d = (z_ndc "
+                  "+ 1) / 2; outside or never drawn is lit";
+        }
+        out.add(topic, "TODO 8: shadow_factor at p " + str(k.p) + " with n " + str(k.n) + " (constant bias " + num(k.constant_bias) +
+                           ", slope bias " + num(k.slope_bias) + ", pcf " + (k.pcf ? "on" : "off") +
+                           ") on the 4x4 map of a light looking straight down at radius 2 gave " + num(mine) + ", expected " +
+                           num(want) + why);
+    }
+}
+
+void judge_group(Group g, Ctx& c) {
+    switch (g) {
+        case Group::kWrap: judge_wrap(c); break;
+        case Group::kSampling: judge_sampling(c); break;
+        case Group::kMipmaps: judge_mipmaps(c); break;
+        case Group::kLod: judge_lod(c); break;
+        case Group::kFilter: judge_filter(c); break;
+        case Group::kBlinnPhong: judge_phong(c); break;
+        case Group::kTangent: judge_tangent(c); break;
+        case Group::kShadow: judge_shadow(c); break;
+    }
+}
+
+// ---- pictures ----
+
+// Pixels next to an edge or a color boundary of the expected image (a neighbour differs by more
+// than 16 levels) may differ, up to a fifth of them; elsewhere 3 levels (rounding).
+cp::Tolerance tolerance_for(const raster::Image& expected) {
+    cp::Tolerance t;
+    t.strict_channel_diff = 3;
+    t.lenient = raster::Mask(expected.width(), expected.height());
+    auto far_apart = [](Color a, Color b) { return max_diff(a, b) > 16; };
+    for (int y = 0; y < expected.height(); ++y) {
+        for (int x = 0; x < expected.width(); ++x) {
+            const Color c = expected.at(x, y);
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    if (expected.in_bounds(x + dx, y + dy) && far_apart(expected.at(x + dx, y + dy), c)) t.lenient.set(x, y);
+                }
+            }
+        }
+    }
+    t.max_lenient_diffs = t.lenient.count() / 5;
+    t.why = "pixels next to an edge, a texel or shadow boundary or a change of mip level depend on rounding";
+    return t;
+}
+
+LevelData level_of(const TextureSpec& spec) {
+    const raster::Image img = texture_image(spec);
+    LevelData l;
+    l.width = img.width();
+    l.height = img.height();
+    for (int y = 0; y < l.height; ++y) {
+        for (int x = 0; x < l.width; ++x) {
+            const Color c = img.at(x, y);
+            l.texels.push_back({double(c.r), double(c.g), double(c.b)});
+        }
+    }
+    return l;
+}
+
+Vec3 rotate(Vec3 axis, double angle, Vec3 v) {
+    const Vec3 k = unit_or_zero(axis);
+    if (k == Vec3{}) return v;
+    const double c = std::cos(angle), s = std::sin(angle);
+    return v * c + raster::cross(k, v) * s + k * (raster::dot(k, v) * (1 - c));
+}
+
+struct WorldTri {
+    Vec3 a, b, c;
+    Vec2 ua, ub, uc;
+    int item;
+};
+std::vector<WorldTri> world_triangles(const Panel& p, bool first_only) {
+    std::vector<WorldTri> out;
+    for (std::size_t i = 0; i < p.items.size() && (!first_only || i == 0); ++i) {
+        const Item& it = p.items[i];
+        std::vector<Vec3> w;
+        for (const Vec3& q : it.mesh.positions) w.push_back(it.position + rotate(it.axis, it.angle, mul(it.size, q)));
+        for (const auto& t : it.mesh.triangles) {
+            if (t[0] < 0 || t[1] < 0 || t[2] < 0 || std::size_t(std::max({t[0], t[1], t[2]})) >= w.size()) continue;
+            WorldTri tri{w[std::size_t(t[0])], w[std::size_t(t[1])], w[std::size_t(t[2])], {}, {}, {}, int(i)};
+            if (it.mesh.uvs.size() == w.size()) {
+                tri.ua = it.mesh.uvs[std::size_t(t[0])];
+                tri.ub = it.mesh.uvs[std::size_t(t[1])];
+                tri.uc = it.mesh.uvs[std::size_t(t[2])];
+            }
+            out.push_back(tri);
+        }
+    }
+    return out;
+}
+
+struct Hit {
+    double t = std::numeric_limits<double>::infinity();
+    const WorldTri* tri = nullptr;
+    double b1 = 0, b2 = 0;
+};
+// Moller-Trumbore, both faces; the nearest hit with t > t_min.
+Hit cast(const std::vector<WorldTri>& tris, Vec3 o, Vec3 d, double t_min) {
+    Hit best;
+    for (const WorldTri& tri : tris) {
+        const Vec3 e1 = tri.b - tri.a, e2 = tri.c - tri.a;
+        const Vec3 p = raster::cross(d, e2);
+        const double det = raster::dot(e1, p);
+        if (det == 0 || !std::isfinite(det)) continue;
+        const Vec3 s = o - tri.a;
+        const double u = raster::dot(s, p) / det;
+        if (u < 0 || u > 1) continue;
+        const Vec3 q = raster::cross(s, e1);
+        const double w = raster::dot(d, q) / det;
+        if (w < 0 || u + w > 1) continue;
+        const double t = raster::dot(e2, q) / det;
+        if (t > t_min && t < best.t) best = {t, &tri, u, w};
+    }
+    return best;
+}
+
+struct Basis {
+    Vec3 r, u, f;
+};
+Basis basis(const Camera& c) {
+    Vec3 f = unit_or_zero(c.target - c.eye);
+    if (f == Vec3{}) f = {0, 0, -1};
+    const Vec3 r = unit_or_zero(raster::cross(f, unit_or_zero(c.up)));
+    return {r, raster::cross(r, f), f};
+}
+// The ray through the point (x, y) (pixels) of a panel.
+Vec3 ray(const Panel& p, const Basis& b, double x, double y) {
+    const double t = std::tan(p.camera.fovy * std::numbers::pi / 360), aspect = double(p.w) / p.h;
+    const double nx = 2 * x / p.w - 1, ny = 1 - 2 * y / p.h;
+    return b.r * (nx * t * aspect) + b.u * (ny * t) + b.f;
+}
+
+Vec2 uv_at(const Hit& h) {
+    const double b0 = 1 - h.b1 - h.b2;
+    return h.tri->ua * b0 + h.tri->ub * h.b1 + h.tri->uc * h.b2;
+}
+
+const TextureSpec* first_texture(const Panel& p) {
+    if (p.items.empty()) return nullptr;
+    const int t = p.items[0].material.texture;
+    return t >= 0 && std::size_t(t) < p.textures.size() ? &p.textures[std::size_t(t)] : nullptr;
+}
+
+// The 16x supersampled bilinear truth of item 0 (an unlit textured quad): per pixel the mean of
+// 4x4 bilinear samples at the exact uv of the ray through each; pixels not wholly on the quad
+// are left out (-1 in `valid`).
+struct Truth {
+    raster::Image img;
+    std::vector<char> valid;
+};
+Truth bilinear_truth(const Panel& p) {
+    Truth t{raster::Image(p.w, p.h, p.background), std::vector<char>(std::size_t(p.w) * std::size_t(p.h), 0)};
+    const TextureSpec* spec = first_texture(p);
+    if (!spec) return t;
+    const LevelData level = level_of(*spec);
+    const auto tris = world_triangles(p, true);
+    const Basis b = basis(p.camera);
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            Vec3 sum{};
+            int hits = 0;
+            for (int sy = 0; sy < 4; ++sy) {
+                for (int sx = 0; sx < 4; ++sx) {
+                    const Hit h = cast(tris, p.camera.eye, ray(p, b, x + (sx + 0.5) / 4, y + (sy + 0.5) / 4), 0);
+                    if (!h.tri) continue;
+                    ++hits;
+                    sum = sum + t_bilinear(level, uv_at(h), spec->wrap_u, spec->wrap_v);
+                }
+            }
+            if (hits < 16) continue;
+            t.img.set(x, y, to_color(sum / 16));
+            t.valid[std::size_t(y) * std::size_t(p.w) + std::size_t(x)] = 1;
+        }
+    }
+    return t;
+}
+
+// The mean absolute channel difference over the valid pixels of a panel.
+double truth_error(const raster::Image& img, const Panel& p, const Truth& t) {
+    double sum = 0;
+    long long n = 0;
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            if (!t.valid[std::size_t(y) * std::size_t(p.w) + std::size_t(x)]) continue;
+            const Color a = img.at(p.x0 + x, p.y0 + y), e = t.img.at(x, y);
+            sum += std::abs(a.r - e.r) + std::abs(a.g - e.g) + std::abs(a.b - e.b);
+            ++n;
+        }
+    }
+    return n ? sum / (3.0 * double(n)) : 0;
+}
+
+// The exact nearest-texel picture of item 0 (an unlit textured quad) at pixel centers.
+Truth nearest_truth(const Panel& p) {
+    Truth t{raster::Image(p.w, p.h, p.background), std::vector<char>(std::size_t(p.w) * std::size_t(p.h), 0)};
+    const TextureSpec* spec = first_texture(p);
+    if (!spec) return t;
+    const LevelData level = level_of(*spec);
+    const auto tris = world_triangles(p, true);
+    const Basis b = basis(p.camera);
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            const Hit h = cast(tris, p.camera.eye, ray(p, b, x + 0.5, y + 0.5), 0);
+            if (!h.tri) continue;
+            t.img.set(x, y, to_color(t_nearest(level, uv_at(h), spec->wrap_u, spec->wrap_v)));
+            t.valid[std::size_t(y) * std::size_t(p.w) + std::size_t(x)] = 1;
+        }
+    }
+    return t;
+}
+
+double share_off(const raster::Image& img, const Panel& p, const Truth& t) {
+    long long n = 0, off = 0;
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            if (!t.valid[std::size_t(y) * std::size_t(p.w) + std::size_t(x)]) continue;
+            ++n;
+            off += max_diff(img.at(p.x0 + x, p.y0 + y), t.img.at(x, y)) > 3;
+        }
+    }
+    return n ? 100.0 * double(off) / double(n) : 0;
+}
+
+// Pixels in the wrong light state: per pixel center the nearest surface by ray casting, lit or
+// not by a ray to the light; the pixel's color is classified by the nearer of the two colors
+// the rules give there (lit, shadowed). Surfaces the light does not face, and pixels where the
+// two colors are close, are left out. Returns (wrong, counted).
+std::pair<long long, long long> wrong_light_state(const raster::Image& img, const Panel& p) {
+    const auto tris = world_triangles(p, false);
+    const Basis b = basis(p.camera);
+    const LightSpec* light = nullptr;
+    for (const LightSpec& l : p.lights) {
+        if (l.casts_shadows) light = &l;
+    }
+    if (!light) return {0, 0};
+    const Vec3 to_light = -unit_or_zero(light->direction);
+    long long wrong = 0, counted = 0;
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            const Hit h = cast(tris, p.camera.eye, ray(p, b, x + 0.5, y + 0.5), 0);
+            if (!h.tri) continue;
+            const Vec3 n = unit_or_zero(raster::cross(h.tri->b - h.tri->a, h.tri->c - h.tri->a));
+            const double c = raster::dot(n, to_light);
+            if (!(c > 0)) continue;
+            const Color base = p.items[std::size_t(h.tri->item)].material.color;
+            const Vec3 bv{double(base.r), double(base.g), double(base.b)};
+            const Color shadowed = to_color(mul(bv, p.ambient));
+            const Color lit = to_color(mul(bv, p.ambient + light->intensity * c));
+            if (max_diff(lit, shadowed) < 12) continue;
+            const Vec3 hit = p.camera.eye + ray(p, b, x + 0.5, y + 0.5) * h.t;
+            const bool in_shadow = cast(tris, hit + n * 1e-6, to_light, 1e-9).tri != nullptr;
+            const Color mine = img.at(p.x0 + x, p.y0 + y);
+            ++counted;
+            const bool looks_lit = max_diff(mine, lit) < max_diff(mine, shadowed);
+            wrong += looks_lit == in_shadow;
+        }
+    }
+    return {wrong, counted};
+}
+
+// The exact spheres (every item a uv_sphere of radius size.x), lit with Blinn-Phong per pixel.
+raster::Image exact_spheres(const Panel& p) {
+    raster::Image img(p.w, p.h, p.background);
+    const Basis b = basis(p.camera);
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            const Vec3 d = unit_or_zero(ray(p, b, x + 0.5, y + 0.5));
+            double best = std::numeric_limits<double>::infinity();
+            const Item* hit_item = nullptr;
+            for (const Item& it : p.items) {
+                const Vec3 oc = p.camera.eye - it.position;
+                const double r = it.size.x, half_b = raster::dot(oc, d), cc = raster::dot(oc, oc) - r * r;
+                const double disc = half_b * half_b - cc;
+                if (disc < 0) continue;
+                const double t = -half_b - std::sqrt(disc);
+                if (t > 0 && t < best) {
+                    best = t;
+                    hit_item = &it;
+                }
+            }
+            if (!hit_item) continue;
+            const Vec3 hit = p.camera.eye + d * best;
+            const Vec3 n = unit_or_zero(hit - hit_item->position);
+            const Color base = hit_item->material.color;
+            const Vec3 bv{double(base.r), double(base.g), double(base.b)};
+            Vec3 sum = mul(bv, p.ambient);
+            for (const LightSpec& l : p.lights) {
+                PhongCase k{bv, hit_item->material.specular, hit_item->material.shininess, n, p.camera.eye - hit, -l.direction,
+                            l.intensity};
+                sum = sum + t_phong(k);
+            }
+            img.set(x, y, to_color(sum));
+        }
+    }
+    return img;
+}
+
+double panel_error(const raster::Image& img, const Panel& p, const raster::Image& truth) {
+    double sum = 0;
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            const Color a = img.at(p.x0 + x, p.y0 + y), e = truth.at(x, y);
+            sum += std::abs(a.r - e.r) + std::abs(a.g - e.g) + std::abs(a.b - e.b);
+        }
+    }
+    return sum / (3.0 * p.w * p.h);
+}
+
+double round2(double x) { return std::round(x * 100) / 100; }
+
+// The theme of a picture and what its caller must do, when the functions it is drawn with pass
+// their own checks: the concept tag and "TODO N: advice".
+std::pair<std::string, std::string> picture_theme(const std::string& id) {
+    static const std::map<std::string, std::pair<std::string, std::string>> themes = {
+        {"m5.fill_triangle",
+         {"rasterizer", "TODO 5: fill_triangle tests each fragment's key first, weighs uv with m4::perspective_weights, "
+                        "computes lambda at the pixel center for a mip filter only, and calls sample()"}},
+        {"m5.magnify",
+         {"filter", "TODO 5: fill_triangle passes the material's filter and, for a mip filter, lambda = "
+                    "level_of_detail(uv_derivatives(...), level 0's size) to sample()"}},
+        {"m5.receding_filters",
+         {"filter", "TODO 5: fill_triangle passes the material's filter and, for a mip filter, lambda = "
+                    "level_of_detail(uv_derivatives at the pixel center of the screen positions, w and uv, level 0's "
+                    "size) to sample()"}},
+        {"m5.tiny_textures", {"filter", "TODO 5: fill_triangle computes lambda with level 0's size and lets sample() clamp it"}},
+        {"m5.grazing", {"filter", "TODO 5: fill_triangle computes lambda with level 0's size and lets sample() clamp it"}},
+        {"m5.wrap_quad", {"wrap", "TODO 5: fill_triangle samples with the texture's own wrap modes (wrap_u, wrap_v)"}},
+        {"m5.perspective_uv",
+         {"perspective uv", "TODO 5: fill_triangle interpolates uv with the perspective-correct weights "
+                            "(m4::perspective_weights of the screen weights and w), not the screen weights"}},
+        {"m5.huge_uv",
+         {"perspective uv", "TODO 5: keep uv in double from the vertices through the interpolation to sample(): a float "
+                            "cannot hold the fraction of 1e7"}},
+        {"m5.specular_spheres",
+         {"specular", "TODO 5: fill_triangle normalizes the interpolated normal, takes V = eye - world position, and adds "
+                      "ambient and blinn_phong per light"}},
+        {"m5.normal_map",
+         {"normal map", "TODOs 5 and 9: draw_scene computes each mesh triangle's tangent_frame from its WORLD positions "
+                        "and uv; fill_triangle perturbs the normalized normal with the normal map's bilinear level-0 "
+                        "texel"}},
+        {"m5.degenerate_uv",
+         {"normal map", "TODOs 5 and 9: a triangle whose tangent frame is not valid keeps its normal"}},
+        {"m5.shadow_box",
+         {"shadow", "TODOs 5 and 9: draw_scene's depth pass draws every casting object through m4::draw_mesh into a "
+                    "resolution^2 float-Z frame with light_view_projection; fill_triangle multiplies each light's term "
+                    "by shadow_factor at the interpolated world position"}},
+        {"m5.shadow_acne",
+         {"shadow bias", "TODOs 5 and 9: fill_triangle passes the normalized normal and the world position to "
+                         "shadow_factor, which applies the settings' biases"}},
+        {"m5.pcf", {"pcf", "TODOs 5 and 9: fill_triangle passes the settings (pcf on or off) to shadow_factor"}},
+        {"m5.light_behind",
+         {"light behind", "TODO 5: where dot(N, L) <= 0 a light adds nothing: no blinn_phong, no shadow lookup"}},
+        {"m5.needs", {"needs", "TODO 9: run only the passes the scene needs, as Stats says"}},
+        {"m5.extreme_input",
+         {"bad input", "TODO 9: skip a triangle with an index out of range or a non-finite clip coordinate; clip the "
+                       "rest with m4::clip_triangle; NaN uv samples black"}},
+        {"m5.showcase", {"pipeline", "TODO 9: follow draw_scene's steps in textures_shadows.h"}},
+    };
+    const auto it = themes.find(id);
+    return it == themes.end() ? std::pair<std::string, std::string>{"pipeline", "TODO 9: follow draw_scene's steps"} : it->second;
+}
+
+// fill_triangle (TODO 5) on m5.fill_triangle's own triangles, drawn by the render half of a
+// scene that calls it through draw_scene (render.cpp, kFillKey): a finding when its picture
+// differs from the reference's beyond the tolerance.
+std::optional<cp::Finding> fill_triangle_fails(const cp::Artifacts& art, const cp::Artifacts& ref) {
+    const std::string image = kFillKey.substr(0, kFillKey.size() - 1);
+    const auto mine_it = art.images.find(image), ref_it = ref.images.find(image);
+    if (ref_it == ref.images.end()) return std::nullopt;
+    if (mine_it == art.images.end() || mine_it->second.width() != ref_it->second.width() ||
+        mine_it->second.height() != ref_it->second.height() ||
+        cp::exceeds_tolerance(mine_it->second, ref_it->second, tolerance_for(ref_it->second))) {
+        return cp::Finding{"rasterizer",
+                           "fill_triangle draws m5.fill_triangle's two textured triangles differently from the reference "
+                           "(beyond the tolerance)",
+                           "", "TODO 5"};
+    }
+    return std::nullopt;
+}
+
+// The ready-made triangle 0 (kNearest) of m5.fill_triangle: at pixels well inside it where the
+// reference shows it, the texel of the perspective-correct uv and of the screen-space uv; more
+// pixels matching the second name the mistake.
+void judge_screen_uv(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
+    const auto ref_it = ref.images.find("main");
+    if (ref_it == ref.images.end() || panel.screen_tris.empty()) return;
+    const ScreenTri& t = panel.screen_tris[0];
+    const TextureSpec* spec = t.material.texture >= 0 && std::size_t(t.material.texture) < panel.textures.size()
+                                  ? &panel.textures[std::size_t(t.material.texture)]
+                                  : nullptr;
+    if (!spec) return;
+    const LevelData level = level_of(*spec);
+    const double area = (t.screen[1].x - t.screen[0].x) * (t.screen[2].y - t.screen[0].y) -
+                        (t.screen[1].y - t.screen[0].y) * (t.screen[2].x - t.screen[0].x);
+    if (area == 0) return;
+    long long telling = 0, screen_like = 0, perspective_like = 0;
+    for (int y = 0; y < panel.h; ++y) {
+        for (int x = 0; x < panel.w; ++x) {
+            const double px = x + 0.5, py = y + 0.5;
+            double l[3];
+            for (int i = 0; i < 3; ++i) {
+                const Vec3 a = t.screen[std::size_t((i + 1) % 3)], b = t.screen[std::size_t((i + 2) % 3)];
+                l[i] = ((a.x - px) * (b.y - py) - (a.y - py) * (b.x - px)) / area;
+            }
+            if (l[0] < 0.05 || l[1] < 0.05 || l[2] < 0.05) continue;
+            double q[3], sum = 0;
+            for (int i = 0; i < 3; ++i) sum += q[i] = l[i] / t.w[std::size_t(i)];
+            Vec2 persp{}, flat{};
+            for (int i = 0; i < 3; ++i) {
+                persp = persp + t.uv[std::size_t(i)] * (q[i] / sum);
+                flat = flat + t.uv[std::size_t(i)] * l[i];
+            }
+            const Color pc = to_color(t_nearest(level, persp, spec->wrap_u, spec->wrap_v));
+            const Color sc = to_color(t_nearest(level, flat, spec->wrap_u, spec->wrap_v));
+            if (max_diff(pc, sc) <= 10 || max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), pc) > 3) continue;
+            ++telling;
+            const Color m = mine.at(panel.x0 + x, panel.y0 + y);
+            screen_like += max_diff(m, sc) <= 3;
+            perspective_like += max_diff(m, pc) <= 3;
+        }
+    }
+    if (screen_like >= 10 && screen_like > perspective_like) {
+        c.add("perspective uv", "TODO 5: at " + std::to_string(screen_like) + " of " + std::to_string(telling) +
+                                    " pixels inside the first triangle your texels are those of the SCREEN-space uv: weigh "
+                                    "each vertex's uv by l_i / w_i and normalize (m4::perspective_weights)");
+    }
+}
+
+void judge_filter_chart(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref) {
+    const Scene& s = c.s;
+    const auto ref_it = ref.images.find("main");
+    raster::PlotSpec chart;
+    chart.title = "error against run time, per filter";
+    chart.x_label = "milliseconds per panel, log scale";
+    chart.y_label = "mean error vs 16x bilinear (levels)";
+    chart.log_x = true;
+    raster::PlotSeries yours{"yours", {210, 60, 50}, {}, {}}, theirs{"reference", {120, 150, 220}, {}, {}};
+    for (std::size_t p = 0; p < s.panels.size(); ++p) {
+        const Panel& panel = s.panels[p];
+        if (panel.items.empty()) continue;
+        const Truth truth = bilinear_truth(panel);
+        const double err = truth_error(mine, panel, truth);
+        const double ref_err = ref_it == ref.images.end() ? err : truth_error(ref_it->second, panel, truth);
+        const std::string key = "panel" + std::to_string(p) + ".seconds";
+        const double ms = 1e3 * get(c.mine, key), ref_ms = 1e3 * get(c.ref, key);
+        const std::string name = filter_name(panel.items[0].material.filter);
+        c.j.measures["error of " + name + " vs 16x supersampled bilinear, levels (reference " + num(round2(ref_err)) + ")"] = round2(err);
+        c.j.measures["time of the " + name + " panel, ms (reference " + num(round2(ref_ms)) + ")"] = round2(ms);
+        yours.points.push_back({ms, err});
+        theirs.points.push_back({ref_ms, ref_err});
+        yours.labels.push_back(name.substr(1));
+        theirs.labels.push_back("");
+        // Within 8% of the reference's error, and never more than half a level beyond it.
+        if (err > ref_err * 1.08 + 0.5) {
+            c.add("filter", "TODOs 4 and 5: the " + name + " panel is " + num(round2(err)) +
+                                " levels from the 16x supersampled bilinear truth on average, the reference's " +
+                                num(round2(ref_err)) + " (allowed: " + num(round2(ref_err * 1.08 + 0.5)) +
+                                "): the level of detail (lambda at the pixel center, in texel units of level 0) or the "
+                                "filter's use of it is off");
+        }
+    }
+    chart.series = {theirs, yours};
+    c.j.pictures["error_vs_time"] = raster::plot(chart);
+}
+
+struct StatInfo {
+    const char* name;
+    const char* topic;  // when the reference's count is not 0
+    const char* todo;
+    const char* what;
+    bool exact;
+};
+constexpr StatInfo kStats[] = {
+    {"shadow_passes", "shadow", "TODO 9", "shadow passes", true},
+    {"shadow_texels", "shadow", "TODO 9", "shadow-map texels allocated", true},
+    {"triangles_drawn", "pipeline", "TODO 9", "fan triangles drawn", true},
+    {"fragments", "rasterizer", "TODO 5", "fragments (covered pixel centers)", false},
+    {"shaded", "rasterizer", "TODO 5", "fragments shaded", false},
+    {"texture_samples", "filter", "TODO 5", "texture samples", false},
+    {"lod_computed", "level of detail", "TODO 5", "level-of-detail computations", false},
+    {"mipmap_builds", "mipmap builds", "TODO 4", "pyramids built", true},
+    {"normal_map_samples", "normal map", "TODO 5", "normal-map samples", false},
+    {"tangent_frames", "normal map", "TODO 9", "tangent frames", true},
+    {"specular_terms", "specular", "TODO 5", "specular terms", false},
+    {"shadow_lookups", "shadow", "TODO 5", "shadow lookups", false},
+};
+
+void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, const raster::Image& expected) {
+    const Scene& s = c.s;
+    const auto main_it = art.images.find("main");
+    const raster::Image* mine = main_it == art.images.end() ? nullptr : &main_it->second;
+    const bool sized = mine && mine->width() == s.width && mine->height() == s.height;
+    const auto [theme_topic, theme_advice] = picture_theme(s.id);
+    const auto ref_main = ref.images.find("main");
+
+    std::map<std::string, std::pair<double, double>> totals;
+    for (std::size_t p = 0; p < s.panels.size(); ++p) {
+        const Panel& panel = s.panels[p];
+        const std::string key = "panel" + std::to_string(p);
+        const std::string where = s.panels.size() > 1 ? " (panel " + std::to_string(p + 1) + ")" : "";
+        if (get(c.mine, key + ".resized") == 1) {
+            c.add("pipeline", "TODO 9: the frame's image was replaced by one of another size" + where);
+        }
+        // A 1x1 texture with a mip filter may or may not get a pyramid (it has no level above 0).
+        int one_texel = 0;
+        for (const Item& it : panel.items) {
+            const int t = it.material.texture;
+            if (t >= 0 && std::size_t(t) < panel.textures.size() && panel.textures[std::size_t(t)].width == 1 &&
+                panel.textures[std::size_t(t)].height == 1 &&
+                (it.material.filter == Filter::kNearestMip || it.material.filter == Filter::kTrilinear)) {
+                ++one_texel;
+            }
+        }
+        for (const StatInfo& st : kStats) {
+            const std::string k = key + ".stats." + st.name;
+            const double a = get(c.mine, k), b = get(c.ref, k);
+            totals[st.name].first += a;
+            totals[st.name].second += b;
+            bool ok;
+            if (std::string(st.name) == "mipmap_builds" && one_texel > 0) {
+                ok = std::abs(a - b) <= one_texel;
+            } else if (b == 0 || a == 0) {
+                ok = a == b;
+            } else if (st.exact) {
+                ok = a == b;
+            } else {
+                ok = std::abs(a - b) <= 0.02 * b + 4;  // per-pixel counts: rounding at edges
+            }
+            if (ok) continue;
+            std::string why;
+            const std::string name = st.name;
+            if (b == 0) {
+                why = " [needs]: this scene does not need that stage, so it must not run";
+            } else if (name == "shaded" && a > b) {
+                why = ": a fragment whose key is greater than the stored key is dropped before anything else (not "
+                      "shaded)";
+            } else if (name == "mipmap_builds") {
+                why = ": one pyramid per texture, built the first time a mip filter meets a fragment with lambda > 0";
+            } else if (name == "shadow_texels") {
+                why = ": each shadow pass allocates resolution^2 keys";
+            }
+            c.add(b == 0 ? "needs" : st.topic, std::string(st.todo) + ": " + num(a) + " " + st.what + where + ", expected " +
+                                                   (st.exact ? num(b) : "about " + num(b)) + why);
+        }
+        if (!sized) continue;
+        if (!panel.screen_tris.empty()) judge_screen_uv(c, *mine, ref, panel);
+        if (s.checks.nearest_truth) {
+            const Truth truth = nearest_truth(panel);
+            const double err = share_off(*mine, panel, truth);
+            const double ref_err = ref_main == ref.images.end() ? 0 : share_off(ref_main->second, panel, truth);
+            c.j.measures["pixels off the exact nearest-texel picture" + where + ", % (reference " + num(std::round(ref_err * 10) / 10) +
+                         ")"] = std::round(err * 10) / 10;
+            if (err > ref_err + 2) {
+                c.add(theme_topic, theme_advice.substr(0, theme_advice.find(": ")) + ": " + num(std::round(err * 10) / 10) +
+                                       "% of the quad's pixels" + where + " are off the exact nearest-texel picture (ray cast "
+                                       "per pixel; reference " + num(std::round(ref_err * 10) / 10) + "%): " +
+                                       theme_advice.substr(theme_advice.find(": ") + 2));
+            }
+        }
+        if (s.checks.shadow_state) {
+            const auto [wrong, counted] = wrong_light_state(*mine, panel);
+            const auto [ref_wrong, ref_counted] =
+                ref_main == ref.images.end() ? std::pair<long long, long long>{0, 0} : wrong_light_state(ref_main->second, panel);
+            c.j.measures["pixels in the wrong light state" + where + " (reference " + std::to_string(ref_wrong) + ", of " +
+                         std::to_string(counted) + " lit surfaces)"] = double(wrong);
+            const double allowed = double(ref_wrong) * 1.3 + 10 + 0.01 * double(counted);
+            if (double(wrong) > allowed) {
+                const double acne = counted ? 100.0 * double(wrong) / double(counted) : 0;
+                c.add(theme_topic == "pcf" ? "shadow" : theme_topic,
+                      theme_advice.substr(0, theme_advice.find(": ")) + ": " + std::to_string(wrong) + " of " +
+                          std::to_string(counted) + " pixels" + where +
+                          " are in the wrong light state against a ray cast to the light (reference " +
+                          std::to_string(ref_wrong) + ", allowed " + num(std::floor(allowed)) + ")" +
+                          (acne > 20 ? ": that many, spread over lit surfaces, is shadow acne (a surface shadowing "
+                                       "itself: the bias) or a wrong light matrix or comparison"
+                                     : "") +
+                          "; " + theme_advice.substr(theme_advice.find(": ") + 2));
+            }
+        }
+        if (s.checks.sphere_error) {
+            const raster::Image truth = exact_spheres(panel);
+            const double err = panel_error(*mine, panel, truth);
+            const double ref_err = ref_main == ref.images.end() ? err : panel_error(ref_main->second, panel, truth);
+            c.j.measures["mean error vs the exact Blinn-Phong spheres, levels (reference " + num(round2(ref_err)) + ")"] = round2(err);
+            if (err > ref_err + 0.5) {
+                c.add("specular", "TODO 5: the spheres are " + num(round2(err)) +
+                                      " levels from the exact Blinn-Phong spheres on average, the reference's " +
+                                      num(round2(ref_err)) + ": " + theme_advice.substr(theme_advice.find(": ") + 2));
+            }
+        }
+    }
+    for (const auto& [name, t] : totals) {
+        if (t.first != 0 || t.second != 0) c.j.measures[name + " (reference " + num(t.second) + ")"] = t.first;
+    }
+    if (sized && s.checks.filter_error) judge_filter_chart(c, *mine, ref);
+    for (const auto& [p, q] : s.checks.same_panels) {
+        if (!sized) break;
+        const Panel &a = s.panels[std::size_t(p)], &b = s.panels[std::size_t(q)];
+        long long diff = 0;
+        int worst = 0;
+        for (int y = 0; y < a.h; ++y) {
+            for (int x = 0; x < a.w; ++x) {
+                const int d = max_diff(mine->at(a.x0 + x, a.y0 + y), mine->at(b.x0 + x, b.y0 + y));
+                diff += d > s.checks.same_tolerance;
+                worst = std::max(worst, d);
+            }
+        }
+        if (diff == 0) continue;
+        std::string why = s.id == "m5.magnify"
+                              ? "a mip filter where lambda <= 0 (everywhere here: magnified) is bilinear on level 0, the "
+                                "very same picture"
+                              : "uv near 1e7 must give the picture of uv near 0 (repeat): keep uv in double, a float "
+                                "cannot hold the fraction";
+        c.add(theme_topic, theme_advice.substr(0, theme_advice.find(": ")) + ": panels " + std::to_string(p + 1) + " and " +
+                               std::to_string(q + 1) + " must agree within " + std::to_string(s.checks.same_tolerance) +
+                               " level(s), but " + std::to_string(diff) + " pixels differ (by up to " + std::to_string(worst) +
+                               "): " + why);
+    }
+
+    if (sized && !expected.empty() && cp::exceeds_tolerance(*mine, expected, tolerance_for(expected))) {
+        // judge() checked every function this picture is drawn with, and they pass: the
+        // difference comes from their callers, fill_triangle (TODO 5) or draw_scene (TODO 9).
+        const bool pipeline = std::any_of(s.panels.begin(), s.panels.end(), [](const Panel& p) { return p.screen_tris.empty(); });
+        const std::optional<cp::Finding> fill = pipeline ? fill_triangle_fails(art, ref) : std::nullopt;
+        if (fill) {
+            c.j.findings.push_back(cp::fix_first(*fill, kFillScene, "this picture is drawn with it",
+                                                 "this picture cannot come out right before that checkpoint passes"));
+        } else {
+            std::vector<std::string> passing;
+            for (Group g : prerequisite_groups(s)) {
+                const std::string id = prerequisite_checkpoint(g);
+                if (std::find(passing.begin(), passing.end(), id) == passing.end()) passing.push_back(id);
+            }
+            std::string list;
+            for (std::size_t i = 0; i < passing.size(); ++i) list += (i ? ", " : "") + passing[i];
+            const auto colon = theme_advice.find(": ");
+            c.add(theme_topic, theme_advice.substr(0, colon) + ": the picture differs from the expected one beyond the tolerance "
+                                                               "(see diff.png)" +
+                                   (list.empty() ? std::string()
+                                                 : ", though the functions it is drawn with pass their own checks (" + list +
+                                                       "), so look at how they are called") +
+                                   ": " + theme_advice.substr(colon + 2) + ". This scene is about: " + s.hint);
+        }
+    }
+}
+
+}  // namespace
+
+cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const cp::Artifacts& reference,
+                    const raster::Image& expected) {
+    const Scene& s = scene(id);
+    cp::Judgement j;
+    if (!expected.empty()) j.tolerance = tolerance_for(expected);
+    Ctx c{s, artifacts.values, reference.values, j};
+    if (artifacts.stray_writes > 0) {
+        c.add("rasterizer", "TODO 5: " + std::to_string(artifacts.stray_writes) +
+                                " write(s) outside the image: clamp the bounding box to the image");
+    }
+    const std::size_t before = j.findings.size();
+    for (Group g : s.groups) judge_group(g, c);
+    const bool own_failed = j.findings.size() > before;
+    // A function the reference draws with that drew nothing (most often draw_scene, TODO 9, not
+    // written yet): the harness names it, and every finding about the picture would follow from it.
+    bool drew_nothing = false;
+    for (const auto& [name, t] : reference.trace) {
+        const auto it = artifacts.trace.find(name);
+        drew_nothing |= t.writes > 0 && it != artifacts.trace.end() && it->second.calls > 0 && it->second.writes == 0;
+    }
+    if (!s.panels.empty() && !own_failed && !drew_nothing) judge_picture(c, artifacts, reference, expected);
+    bool fails = j.findings.size() > before || (!s.panels.empty() && drew_nothing);
+    if (!fails && !s.panels.empty() && !expected.empty()) {
+        const auto it = artifacts.images.find("main");
+        fails = it == artifacts.images.end() || cp::exceeds_tolerance(it->second, expected, j.tolerance);
+    }
+    // A failing picture first checks the functions of TODOs 1-4 and 6-8 its panels use, on their
+    // own checkpoints' inputs. One that is wrong is the finding ("fix TODO 3 first, see
+    // m5.mipmaps"), and the picture's own findings, which would blame fill_triangle or
+    // draw_scene for what it did, are left out. A checkpoint that passes stays passed.
+    std::vector<cp::Finding> first;
+    for (Group g : fails ? prerequisite_groups(s) : std::vector<Group>{}) {
+        const std::string prefix = prerequisite_key(g);
+        const Values mine = cp::values_under(artifacts.values, prefix), ref = cp::values_under(reference.values, prefix);
+        cp::Judgement scratch;
+        Ctx sub{s, mine, ref, scratch};
+        judge_group(g, sub);
+        if (scratch.findings.empty()) continue;
+        first.push_back(cp::fix_first(scratch.findings.front(), prerequisite_checkpoint(g), "this picture is drawn with it",
+                                      "this picture cannot come out right before that checkpoint passes"));
+    }
+    if (!first.empty()) {
+        j.findings.resize(before);
+        j.findings.insert(j.findings.end(), first.begin(), first.end());
+    }
+    j.upstream_failed = !first.empty() || (!s.panels.empty() && own_failed);
+    return j;
+}
+
+}  // namespace m5cp

@@ -1,0 +1,1146 @@
+#include "m5/scenes.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "harness/checkpoint.h"
+#include "variant_random.h"
+
+namespace m5cp {
+
+namespace {
+
+std::uint8_t byte(double v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 255.0))); }
+
+// A fixed pseudo-random byte per (x, y, channel, seed): the same on every platform.
+std::uint8_t hash_byte(std::uint32_t x, std::uint32_t y, std::uint32_t c, std::uint32_t seed) {
+    std::uint32_t h = x * 73856093u ^ y * 19349663u ^ c * 83492791u ^ seed * 2654435761u;
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
+    return static_cast<std::uint8_t>(h & 0xFFu);
+}
+
+Vec3 unit(Vec3 v) {
+    const double len = raster::length(v);
+    return len > 0 ? v / len : Vec3{};
+}
+
+}  // namespace
+
+raster::Image texture_image(const TextureSpec& t) {
+    const int w = std::max(0, t.width), h = std::max(0, t.height);
+    raster::Image img(std::max(1, w), std::max(1, h));
+    if (w == 0 || h == 0) return raster::Image();
+    const int cells = std::max(1, t.cells);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            Color c = t.a;
+            switch (t.pattern) {
+                case Pattern::kChecker: c = ((x * cells / w) + (y * cells / h)) % 2 == 0 ? t.a : t.b; break;
+                case Pattern::kFine: c = ((x / 2) + (y / 2)) % 2 == 0 ? t.a : t.b; break;
+                case Pattern::kGradient: {
+                    const double fx = w > 1 ? double(x) / (w - 1) : 0.5, fy = h > 1 ? double(y) / (h - 1) : 0.5;
+                    c = {byte(t.a.r + (t.b.r - t.a.r) * fx), byte(t.a.g + (t.b.g - t.a.g) * fy), byte(40 + 150 * fx * fy)};
+                    if (x < std::max(1, w / 8) && y < std::max(1, h / 8)) c = {255, 255, 255};
+                    break;
+                }
+                case Pattern::kBricks: {
+                    const int bh = std::max(2, h / cells), bw = 2 * bh;
+                    const int row = y / bh;
+                    const int xs = x + (row % 2) * (bw / 2);
+                    const bool mortar = y % bh == 0 || xs % bw == 0;
+                    const int brick = (xs / bw) * 7 + row * 13;
+                    const int shade = int(hash_byte(std::uint32_t(brick), 0, 0, t.seed) % 40) - 20;
+                    c = mortar ? t.b : Color{byte(t.a.r + shade), byte(t.a.g + shade * 0.6), byte(t.a.b + shade * 0.4)};
+                    break;
+                }
+                case Pattern::kBumps: {
+                    // Round bumps h = A (1 - q)^2 (q = r^2 / R^2, r < R), their normals
+                    // normalize(-dh/dx, -dh/dy, 1) with x right (+u) and y DOWN the image (+v).
+                    const double cw = double(w) / cells, ch = double(h) / cells;
+                    const double lx = (x + 0.5) / cw - std::floor((x + 0.5) / cw) - 0.5;
+                    const double ly = (y + 0.5) / ch - std::floor((y + 0.5) / ch) - 0.5;
+                    const double R = 0.4, A = 0.1, q = (lx * lx + ly * ly) / (R * R);
+                    Vec3 n{0, 0, 1};
+                    if (q < 1) n = unit(Vec3{4 * A * lx * (1 - q) / (R * R), 4 * A * ly * (1 - q) / (R * R), 1});
+                    c = {byte(255 * (n.x + 1) / 2), byte(255 * (n.y + 1) / 2), byte(255 * (n.z + 1) / 2)};
+                    break;
+                }
+                case Pattern::kArrow: {
+                    const double fx = (x + 0.5) / w, fy = (y + 0.5) / h;
+                    const bool stem = fx >= 0.2 && fx < 0.38 && fy >= 0.12 && fy < 0.88;
+                    const bool top = fx >= 0.2 && fx < 0.85 && fy >= 0.12 && fy < 0.3;
+                    const bool mid = fx >= 0.2 && fx < 0.65 && fy >= 0.45 && fy < 0.6;
+                    c = stem || top || mid ? t.a : Color{byte(t.b.r + 120 * fx), t.b.g, byte(t.b.b + 120 * fy)};
+                    break;
+                }
+                case Pattern::kNoise:
+                    c = {hash_byte(std::uint32_t(x), std::uint32_t(y), 0, t.seed), hash_byte(std::uint32_t(x), std::uint32_t(y), 1, t.seed),
+                         hash_byte(std::uint32_t(x), std::uint32_t(y), 2, t.seed)};
+                    break;
+            }
+            img.set(x, y, c);
+        }
+    }
+    return img;
+}
+
+Mesh quad(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec2 uv0, Vec2 uv1) {
+    Mesh m;
+    m.positions = {a, b, c, d};
+    m.triangles = {{0, 1, 2}, {0, 2, 3}};
+    m.uvs = {{uv0.x, uv0.y}, {uv1.x, uv0.y}, {uv1.x, uv1.y}, {uv0.x, uv1.y}};
+    const Vec3 n = unit(raster::cross(b - a, d - a));
+    m.normals = {n, n, n, n};
+    return m;
+}
+
+Mesh box_mesh() {
+    Mesh m;
+    const Vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (const Vec3& n : normals) {
+        const Vec3 t = std::abs(n.y) > 0.5 ? Vec3{0, 0, -n.y} : Vec3{0, 1, 0};
+        const Vec3 s = raster::cross(t, n);  // (s, t, n) right-handed: counter-clockwise from outside
+        const int base = int(m.positions.size());
+        m.positions.push_back(n - s - t);
+        m.positions.push_back(n + s - t);
+        m.positions.push_back(n + s + t);
+        m.positions.push_back(n - s + t);
+        m.uvs.insert(m.uvs.end(), {{0, 1}, {1, 1}, {1, 0}, {0, 0}});
+        for (int k = 0; k < 4; ++k) m.normals.push_back(n);
+        m.triangles.push_back({base, base + 1, base + 2});
+        m.triangles.push_back({base, base + 2, base + 3});
+    }
+    return m;
+}
+
+Mesh uv_sphere(int segments) {
+    Mesh m;
+    segments = std::max(3, segments);
+    const int rings = std::max(2, segments / 2);
+    const double pi = std::numbers::pi;
+    for (int r = 0; r <= rings; ++r) {
+        const double theta = pi * r / rings;
+        for (int s = 0; s <= segments; ++s) {
+            const double phi = 2 * pi * s / segments;
+            const Vec3 p{std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)};
+            m.positions.push_back(p);
+            m.normals.push_back(p);
+            m.uvs.push_back({double(s) / segments, double(r) / rings});
+        }
+    }
+    auto at = [segments](int r, int s) { return r * (segments + 1) + s; };
+    for (int r = 0; r < rings; ++r) {
+        for (int s = 0; s < segments; ++s) {
+            if (r > 0) m.triangles.push_back({at(r, s), at(r + 1, s + 1), at(r, s + 1)});
+            if (r + 1 < rings) m.triangles.push_back({at(r, s), at(r + 1, s), at(r + 1, s + 1)});
+        }
+    }
+    return m;
+}
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Item item(Mesh mesh, MaterialSpec material = {}) {
+    Item it;
+    it.mesh = std::move(mesh);
+    it.material = material;
+    return it;
+}
+
+MaterialSpec unlit(int texture, Filter filter) {
+    MaterialSpec m;
+    m.texture = texture;
+    m.filter = filter;
+    m.lit = false;
+    return m;
+}
+
+MaterialSpec plain(Color c, Vec3 specular = {}, double shininess = 32) {
+    MaterialSpec m;
+    m.color = c;
+    m.specular = specular;
+    m.shininess = shininess;
+    return m;
+}
+
+TextureSpec tex(Pattern p, int w, int h, int cells = 2, Wrap wu = Wrap::kRepeat, Wrap wv = Wrap::kRepeat) {
+    TextureSpec t;
+    t.pattern = p;
+    t.width = w;
+    t.height = h;
+    t.cells = cells;
+    t.wrap_u = wu;
+    t.wrap_v = wv;
+    return t;
+}
+
+Scene numbers(std::string id, std::string title, std::string hint, std::vector<int> todos, std::vector<Group> groups) {
+    Scene s;
+    s.id = std::move(id);
+    s.title = std::move(title);
+    s.hint = std::move(hint);
+    s.todos = std::move(todos);
+    s.width = s.height = 16;
+    s.groups = std::move(groups);
+    return s;
+}
+
+Scene picture(std::string id, std::string title, std::string hint, std::vector<int> todos, int w, int h) {
+    Scene s;
+    s.id = std::move(id);
+    s.title = std::move(title);
+    s.hint = std::move(hint);
+    s.todos = std::move(todos);
+    s.width = w;
+    s.height = h;
+    return s;
+}
+
+// A camera at a generic position (no vertex lands exactly on a pixel boundary).
+Camera cam(Vec3 eye, Vec3 target = {0.013, -0.021, 0.007}, double near = 0.5, double far = 100) {
+    Camera c;
+    c.eye = eye;
+    c.target = target;
+    c.near = near;
+    c.far = far;
+    return c;
+}
+
+Panel panel(Camera c, std::vector<Item> items, std::vector<TextureSpec> textures, int x0, int y0, int w, int h) {
+    Panel p;
+    p.camera = c;
+    p.items = std::move(items);
+    p.textures = std::move(textures);
+    p.x0 = x0;
+    p.y0 = y0;
+    p.w = w;
+    p.h = h;
+    return p;
+}
+
+LightSpec sun(Vec3 travel, Vec3 intensity = {0.85, 0.85, 0.85}, bool shadows = false) { return {travel, intensity, shadows}; }
+
+const Color kFloor{200, 200, 190}, kBoxColor{210, 120, 80}, kRed{220, 70, 60}, kGreen{70, 190, 90}, kBlue{70, 110, 230};
+
+// A floor quad at height y, x in [-s, s], z in [z_near, z_far] (z_far < z_near), facing up, uv
+// (0, 0) at the near left corner to (u, v) at the far right one.
+Mesh floor_quad(double y, double s, double z_near, double z_far, Vec2 uv) {
+    return quad({-s, y, z_near}, {s, y, z_near}, {s, y, z_far}, {-s, y, z_far}, {0, 0}, uv);
+}
+
+// A quad facing +z in the plane z, half-size s, uv from uv0 (top left) to uv1 (bottom right):
+// v grows DOWN the quad, as it does down the texture image.
+Mesh facing_quad(double s, double z, Vec2 uv0, Vec2 uv1) {
+    Mesh m = quad({-s, s, z}, {-s, -s, z}, {s, -s, z}, {s, s, z}, {0, 0}, {1, 1});
+    m.uvs = {{uv0.x, uv0.y}, {uv0.x, uv1.y}, {uv1.x, uv1.y}, {uv1.x, uv0.y}};
+    return m;
+}
+
+// The shadow scenes' floor and box (standing on the floor, turned about y).
+std::vector<Item> floor_and_box(Vec3 box_at, double box_half, double turn) {
+    Item floor = item(floor_quad(0, 3, 3, -3, {1, 1}), plain(kFloor));
+    Item box = item(box_mesh(), plain(kBoxColor));
+    box.position = box_at;
+    box.size = {box_half, box_half, box_half};
+    box.angle = turn;
+    return {floor, box};
+}
+
+std::vector<Scene> build() {
+    std::vector<Scene> all;
+    auto add = [&all](Scene s) { all.push_back(std::move(s)); };
+
+    // ---- numbers ----
+    add(numbers("m5.wrap", "Wrap modes on whole-number texel indices, negative and huge",
+                "repeat is i mod n in [0, n) (so -1 is n - 1), clamp min(max(i, 0), n - 1), mirrored m = i mod 2n, "
+                "then m or 2n - 1 - m; any finite index (1e300 included) wraps exactly with std::fmod",
+                {1}, {Group::kWrap}));
+    add(numbers("m5.sampling", "Nearest and bilinear samples: texel centers at half-integers",
+                "x = u * w; nearest reads texel floor(x); bilinear uses x - 0.5, i = floor, a = the fraction, and "
+                "weights (1 - a)(1 - b), a(1 - b), (1 - a)b, ab; NaN or infinite uv is black",
+                {2, 1}, {Group::kSampling}));
+    add(numbers("m5.mipmaps", "Mipmap pyramids of 8x8, 1x1, 3x5, 7x1 and 5x2 textures",
+                "level k + 1 is max(1, floor(w / 2)) by max(1, floor(h / 2)); each texel the plain average of 2x2 "
+                "texels of level k (an odd last row or column is dropped); down to 1x1",
+                {3}, {Group::kMipmaps}));
+    add(numbers("m5.lod", "Screen-space uv derivatives and the level of detail",
+                "du/dx = (A_x B - A B_x) / B^2 with A = sum l_i u_i / w_i and B = sum l_i / w_i; rho in TEXEL units "
+                "(W du/dx, H dv/dx), lambda = log2(rho), not clamped",
+                {4}, {Group::kLod}));
+    add(numbers("m5.filters", "sample(): nearest, bilinear, nearest-mip and trilinear, lambda clamped",
+                "lambda <= 0 (or NaN) magnifies with bilinear on level 0; else clamp to [0, L - 1]; nearest-mip reads "
+                "level floor(lambda + 0.5); trilinear blends floor(lambda) and the next by the fraction; build the "
+                "pyramid once, only when a level above 0 is needed",
+                {4, 3, 2}, {Group::kFilter}));
+    add(numbers("m5.blinn_phong", "Blinn-Phong values: halfway vector, shininess, a light behind",
+                "normalize N, V, L; nothing at all when dot(N, L) <= 0; else base c I + specular max(0, N.H)^s I with "
+                "H = normalize(L + V)",
+                {6}, {Group::kBlinnPhong}));
+    add(numbers("m5.normal_maps", "Tangent frames and normal-mapped normals",
+                "T = (e1 dv2 - e2 dv1) / r, B = (e2 du1 - e1 du2) / r; Gram-Schmidt T against n, B' = cross(n, T') "
+                "(negated if it points away from B); texel to 2 t / 255 - 1; no frame: n unchanged",
+                {7}, {Group::kTangent}));
+    add(numbers("m5.shadow_lookup", "The light's matrix and shadow lookups on a 4x4 map",
+                "orthographic(-r, r, -r, r, r, 3r) * look_at(center - 2r dir, center, up); shadowed when d - bias / "
+                "(2r) > stored, bias = constant + slope * min(tan, 10); outside or never drawn is lit; PCF: lit "
+                "fraction of 3x3",
+                {8}, {Group::kShadow}));
+
+    // ---- the rasterizer alone ----
+    {
+        Scene s = picture("m5.fill_triangle", "Two textured triangles straight through fill_triangle",
+                          "per covered pixel center: key and depth pre-test, perspective-correct uv (u/w, v/w, 1/w), "
+                          "lambda from uv_derivatives for a mip filter, sample(), to_color",
+                          {5, 2, 4}, 128, 96);
+        Panel pn = panel(cam({0, 0, 5}), {}, {tex(Pattern::kChecker, 16, 16, 8), tex(Pattern::kFine, 64, 64)}, 0, 0, 128, 96);
+        pn.textures[1].a = {240, 240, 250};
+        pn.textures[1].b = {40, 60, 140};
+        // Counter-clockwise, w from 1 to 5: the checker squares bend toward the near corner.
+        pn.screen_tris.push_back({{Vec3{6.3, 8.6, 0.2}, Vec3{120.4, 14.2, 0.6}, Vec3{30.2, 88.7, -0.1}},
+                                  {1, 5, 2},
+                                  {Vec2{0, 0}, Vec2{2, 0}, Vec2{0, 2}},
+                                  unlit(0, Filter::kNearest)});
+        // Clockwise, in front of the first along part of it, minified: trilinear.
+        pn.screen_tris.push_back({{Vec3{20.6, 84.3, 0.5}, Vec3{112.7, 80.1, -0.3}, Vec3{80.1, 6.4, 0.4}},
+                                  {1.5, 1, 6},
+                                  {Vec2{0, 0}, Vec2{6, 0}, Vec2{3, 6}},
+                                  unlit(1, Filter::kTrilinear)});
+        s.panels.push_back(pn);
+        add(s);
+    }
+
+    // ---- filtering ----
+    {
+        Scene s = picture("m5.magnify", "Pure magnification: nearest, bilinear, and trilinear (no pyramid)",
+                          "a 4x4 texture over 80 pixels: nearest shows squares, bilinear blends between texel CENTERS; "
+                          "a mip filter with lambda <= 0 is bilinear on level 0 and builds no pyramid",
+                          {2, 4, 5}, 288, 96);
+        const Filter filters[3] = {Filter::kNearest, Filter::kBilinear, Filter::kTrilinear};
+        for (int p = 0; p < 3; ++p) {
+            Panel pn = panel(cam({0.02, 0.03, 4.2}), {item(facing_quad(1.6, 0, {0, 0}, {1, 1}), unlit(0, filters[p]))},
+                             {tex(Pattern::kNoise, 4, 4, 1, Wrap::kClampToEdge, Wrap::kClampToEdge)}, 96 * p, 0, 96, 96);
+            s.panels.push_back(pn);
+        }
+        s.checks.same_panels = {{1, 2}};
+        s.checks.same_tolerance = 0;
+        add(s);
+    }
+    {
+        Scene s = picture("m5.receding_filters", "A receding textured plane with each filter, against a 16x supersampled truth",
+                          "nearest and bilinear alias far away; nearest-mip and trilinear pick the level from lambda; "
+                          "each panel's error must be close to the reference's",
+                          {4, 3, 2, 5}, 256, 160);
+        const Filter filters[4] = {Filter::kNearest, Filter::kBilinear, Filter::kNearestMip, Filter::kTrilinear};
+        for (int p = 0; p < 4; ++p) {
+            TextureSpec t = tex(Pattern::kFine, 32, 32);
+            t.a = {235, 225, 200};
+            t.b = {50, 70, 120};
+            Panel pn = panel(cam({0.04, 0.6, 4}, {0.01, -0.6, -6}, 0.5, 100),
+                             {item(floor_quad(-1, 6, 2, -60, {6, 31}), unlit(0, filters[p]))}, {t}, 128 * (p % 2),
+                             80 * (p / 2), 128, 80);
+            pn.timed = true;
+            s.panels.push_back(pn);
+        }
+        s.checks.filter_error = true;
+        s.demo = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m5.wrap_quad", "Wrap modes on a quad whose uv runs from -1.25 to 2.25",
+                          "repeat tiles, clamp to edge stretches the border texels, mirrored repeat flips every other "
+                          "copy; u and v wrap independently (the last panel repeats u and mirrors v)",
+                          {1, 2, 5}, 384, 96);
+        const Wrap wu[4] = {Wrap::kRepeat, Wrap::kClampToEdge, Wrap::kMirroredRepeat, Wrap::kRepeat};
+        const Wrap wv[4] = {Wrap::kRepeat, Wrap::kClampToEdge, Wrap::kMirroredRepeat, Wrap::kMirroredRepeat};
+        for (int p = 0; p < 4; ++p) {
+            TextureSpec t = tex(Pattern::kArrow, 16, 16, 1, wu[p], wv[p]);
+            t.a = {250, 230, 90};
+            t.b = {40, 60, 90};
+            Panel pn = panel(cam({0.02, 0.03, 4.2}), {item(facing_quad(1.7, 0, {-1.25, -1.25}, {2.25, 2.25}), unlit(0, Filter::kNearest))},
+                             {t}, 96 * p, 0, 96, 96);
+            s.panels.push_back(pn);
+        }
+        s.checks.nearest_truth = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m5.tiny_textures", "A 1x1, a 3x5 and a 7x1 texture, minified with trilinear",
+                          "a 1x1 texture has one level (lambda clamps to 0); a 3x5 one has levels 3x5, 1x2, 1x1; "
+                          "7x1 has 7x1, 3x1, 1x1 (odd last columns dropped)",
+                          {3, 4}, 288, 96);
+        const TextureSpec texs[3] = {tex(Pattern::kNoise, 1, 1), tex(Pattern::kNoise, 3, 5), tex(Pattern::kNoise, 7, 1)};
+        for (int p = 0; p < 3; ++p) {
+            TextureSpec t = texs[p];
+            t.seed = 7 + std::uint32_t(p);
+            Panel pn = panel(cam({0.04, 0.7, 3.5}, {0.01, -0.8, -6}, 0.5, 100),
+                             {item(floor_quad(-1, 4, 2, -40, {4, 24}), unlit(0, Filter::kTrilinear))}, {t}, 96 * p, 0, 96, 96);
+            s.panels.push_back(pn);
+        }
+        add(s);
+    }
+    {
+        Scene s = picture("m5.perspective_uv", "A checkerboard floor through draw_scene: perspective-correct uv",
+                          "interpolate u/w, v/w and 1/w linearly on the screen, then divide (m4::perspective_weights)",
+                          {5, 9}, 128, 96);
+        // The whole floor lies inside the view volume: nothing is clipped.
+        Panel pn = panel(cam({0.05, 0.9, 4.5}, {0.02, -0.9, -3}, 0.5, 50),
+                         {item(floor_quad(-1, 1.5, 1.5, -9, {1, 1}), unlit(0, Filter::kNearest))},
+                         {tex(Pattern::kChecker, 8, 8, 8)}, 0, 0, 128, 96);
+        pn.textures[0].a = {255, 255, 255};
+        pn.textures[0].b = {32, 32, 32};
+        s.panels.push_back(pn);
+        s.checks.nearest_truth = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m5.huge_uv", "uv near 1e7: double keeps the fraction (float would not)",
+                          "keep uv in double from the vertices to the sample: at 1e7 a float's spacing is 1, so every "
+                          "texel between whole numbers would be lost",
+                          {2, 1, 5}, 288, 96);
+        const double offsets[3] = {0, 1e7, 1e7};
+        const Filter filters[3] = {Filter::kBilinear, Filter::kBilinear, Filter::kTrilinear};
+        for (int p = 0; p < 3; ++p) {
+            const double o = offsets[p];
+            TextureSpec t = tex(Pattern::kGradient, 16, 16);
+            t.a = {30, 40, 0};
+            t.b = {240, 230, 0};
+            Panel pn = panel(cam({0.02, 0.03, 4.2}), {item(facing_quad(1.6, 0, {o, o}, {o + 1, o + 1}), unlit(0, filters[p]))},
+                             {t}, 96 * p, 0, 96, 96);
+            s.panels.push_back(pn);
+        }
+        s.checks.same_panels = {{0, 1}, {0, 2}};
+        s.checks.same_tolerance = 1;
+        add(s);
+    }
+    {
+        Scene s = picture("m5.grazing", "A plane at a grazing angle: lambda at its clamp far away",
+                          "far away rho is huge: clamp lambda to L - 1, so the 1x1 level (the texture's average) is "
+                          "read; never index past the last level",
+                          {4, 3, 5}, 256, 64);
+        const Filter filters[2] = {Filter::kTrilinear, Filter::kNearestMip};
+        for (int p = 0; p < 2; ++p) {
+            TextureSpec t = tex(Pattern::kChecker, 16, 16, 4);
+            t.a = {240, 120, 60};
+            t.b = {30, 90, 200};
+            Panel pn = panel(cam({0.03, 0.15, 4}, {0.01, 0.02, -10}, 0.05, 300),
+                             {item(floor_quad(0, 20, 3, -200, {40, 400}), unlit(0, filters[p]))}, {t}, 128 * p, 0, 128, 64);
+            s.panels.push_back(pn);
+        }
+        add(s);
+    }
+
+    // ---- light ----
+    {
+        Scene s = picture("m5.specular_spheres", "Three spheres, shininess 8, 32 and 128: Blinn-Phong per pixel",
+                          "per fragment: N normalized, V toward the eye, H = normalize(L + V), specular max(0, N.H)^s; "
+                          "each sphere within half a level of the reference's error against the exact spheres",
+                          {6, 5, 9}, 240, 96);
+        Panel pn = panel(cam({0.02, 0.3, 6}, {0.01, 0, 0}), {}, {}, 0, 0, 240, 96);
+        const double shininess[3] = {8, 32, 128};
+        const Color colors[3] = {kRed, kGreen, kBlue};
+        for (int k = 0; k < 3; ++k) {
+            Item ball = item(uv_sphere(32), plain(colors[k], {200, 200, 200}, shininess[k]));
+            ball.position = {-2.3 + 2.3 * k, 0, 0};
+            ball.size = {0.95, 0.95, 0.95};
+            pn.items.push_back(ball);
+        }
+        pn.lights = {sun({-0.5, -0.6, -1}, {0.8, 0.8, 0.8}), sun({0.8, -0.2, -0.4}, {0.25, 0.2, 0.15})};
+        s.panels.push_back(pn);
+        s.checks.sphere_error = true;
+        s.demo = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m5.normal_map", "A normal-mapped quad, its uv sheared (left) and square (right)",
+                          "T and B from positions and uv; T' = T made orthogonal to N, B' = cross(N, T') (not B "
+                          "itself: with sheared uv it is not perpendicular to T); the texel as 2 t / 255 - 1",
+                          {7, 6, 5, 9}, 256, 96);
+        for (int p = 0; p < 2; ++p) {
+            Mesh q = quad({-1.7, -1.2, 0}, {1.7, -1.2, 0}, {1.7, 1.2, 0}, {-1.7, 1.2, 0});
+            // uv at the corners: v grows down the quad; the sheared one slides u by 0.9 per v.
+            const double shear = p == 0 ? 0.9 : 0;
+            q.uvs = {{0, 2}, {3, 2}, {3 + 2 * shear, 0}, {2 * shear, 0}};
+            MaterialSpec m = plain({200, 180, 160}, {140, 140, 140}, 24);
+            m.normal_map = 0;
+            Panel pn = panel(cam({0.02, 0.03, 4.2}), {item(q, m)}, {tex(Pattern::kBumps, 64, 64, 4)}, 128 * p, 0, 128, 96);
+            pn.lights = {sun({-0.6, -0.5, -0.8}, {0.8, 0.8, 0.8})};
+            s.panels.push_back(pn);
+        }
+        s.demo = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m5.degenerate_uv", "Normal-mapped triangles whose uv make no tangent frame: no NaN",
+                          "when r = du1 dv2 - du2 dv1 is 0 (all three uv equal, or on one line) or not finite, "
+                          "tangent_frame is not valid and the normal stays unperturbed",
+                          {7, 9}, 96, 96);
+        Mesh m;
+        m.positions = {{-1.6, -1.4, 0}, {0, -1.5, 0.1}, {-0.8, 0.1, 0},     // good uv
+                       {0.1, -1.4, 0},  {1.6, -1.3, 0}, {0.8, 0.1, 0.1},    // all three uv equal
+                       {-1.6, 0.2, 0},  {0, 0.1, 0.1},  {-0.7, 1.6, 0},     // uv on one line
+                       {0.1, 0.2, 0.1}, {1.6, 0.1, 0},  {0.8, 1.6, 0}};     // a NaN uv
+        m.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}};
+        m.uvs = {{0, 1}, {1, 1}, {0.5, 0}, {0.3, 0.3}, {0.3, 0.3}, {0.3, 0.3},
+                 {0, 0}, {0.5, 0.5}, {1, 1}, {0, 1}, {kNaN, 1}, {0.5, 0}};
+        const Vec3 n = unit(Vec3{0.02, 0.03, 1});
+        m.normals.assign(m.positions.size(), n);
+        MaterialSpec mat = plain({190, 200, 170}, {150, 150, 150}, 16);
+        mat.normal_map = 0;
+        Panel pn = panel(cam({0.02, 0.03, 4}), {item(m, mat)}, {tex(Pattern::kBumps, 32, 32, 2)}, 0, 0, 96, 96);
+        pn.lights = {sun({-0.5, -0.4, -1})};
+        s.panels.push_back(pn);
+        add(s);
+    }
+
+    // ---- shadows ----
+    {
+        Scene s = picture("m5.shadow_box", "A box on a floor and its shadow, against a ray cast to the light",
+                          "depth pass from the light (orthographic, light_view_projection), then per fragment the "
+                          "map's texel and d - bias / (2r) > stored",
+                          {8, 9}, 128, 96);
+        std::vector<Item> items = floor_and_box({0.2, 0.6, -0.1}, 0.6, 0.4);
+        Item small = item(box_mesh(), plain({90, 160, 210}));
+        small.position = {-1.3, 1.5, 0.8};
+        small.size = {0.3, 0.3, 0.3};
+        items.push_back(small);
+        Panel pn = panel(cam({0.3, 3.2, 5.5}, {0.01, 0.2, 0.02}, 0.5, 50), items, {}, 0, 0, 128, 96);
+        pn.lights = {sun({-0.5, -1, -0.35}, {0.85, 0.85, 0.85}, true)};
+        pn.shadows.resolution = 1024;
+        pn.shadows.center = {0, 0.5, 0};
+        pn.shadows.radius = 3.6;
+        pn.shadows.pcf = false;
+        s.panels.push_back(pn);
+        s.checks.shadow_state = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m5.shadow_acne", "A light 9 degrees above the floor: acne without bias, peter panning with too much",
+                          "bias = constant + slope * min(tan(theta), 10) in world units, compared as d - bias / (2r) > "
+                          "stored; the right panel's bias is too large on purpose (its shadow detaches)",
+                          {8, 9}, 256, 96);
+        for (int p = 0; p < 2; ++p) {
+            Panel pn = panel(cam({0.3, 3.0, 5.5}, {0.01, 0.1, 0.02}, 0.5, 50), floor_and_box({0.8, 0.3, 0.1}, 0.3, 0.3), {},
+                             128 * p, 0, 128, 96);
+            pn.lights = {sun({-1, -0.17, -0.3}, {0.85, 0.85, 0.85}, true)};
+            pn.shadows.resolution = 512;
+            pn.shadows.center = {0, 0, 0};
+            pn.shadows.radius = 4.3;
+            pn.shadows.pcf = false;
+            if (p == 1) pn.shadows.constant_bias = 0.6;
+            s.panels.push_back(pn);
+        }
+        s.checks.shadow_state = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m5.pcf", "A coarse shadow map (128 texels) without and with 3x3 PCF",
+                          "PCF: the lit fraction of the 3x3 texels around the one p falls in, each compared with the "
+                          "same biased depth; a texel outside the map counts as lit",
+                          {8, 9}, 256, 96);
+        for (int p = 0; p < 2; ++p) {
+            Panel pn = panel(cam({0.3, 3.2, 5.5}, {0.01, 0.2, 0.02}, 0.5, 50), floor_and_box({0.1, 0.7, 0}, 0.7, 0.6), {},
+                             128 * p, 0, 128, 96);
+            pn.lights = {sun({-0.6, -1, -0.5}, {0.85, 0.85, 0.85}, true)};
+            pn.shadows.resolution = 128;
+            pn.shadows.center = {0, 0.5, 0};
+            pn.shadows.radius = 3.6;
+            pn.shadows.pcf = p == 1;
+            s.panels.push_back(pn);
+        }
+        s.checks.shadow_state = true;
+        s.demo = true;
+        add(s);
+    }
+    {
+        Scene s = picture("m5.light_behind", "A shadow-casting light behind every surface: ambient only",
+                          "dot(N, L) <= 0: the light adds nothing (no diffuse, no specular) and no shadow lookup is "
+                          "made; the depth pass still runs",
+                          {6, 8, 9}, 128, 96);
+        std::vector<Item> items = floor_and_box({0.2, 0.9, -0.1}, 0.6, 0);
+        items[1].material.specular = {200, 200, 200};
+        Item ball = item(uv_sphere(24), plain(kGreen, {200, 200, 200}, 16));
+        ball.position = {-1.3, 0.7, 0.6};
+        ball.size = {0.5, 0.5, 0.5};
+        items.push_back(ball);
+        Panel pn = panel(cam({0.3, 3.2, 5.5}, {0.01, 0.2, 0.02}, 0.5, 50), items, {}, 0, 0, 128, 96);
+        pn.lights = {sun({0, 1, 0}, {0.85, 0.85, 0.85}, true)};
+        pn.shadows.center = {0, 0.5, 0};
+        pn.shadows.radius = 3.6;
+        s.panels.push_back(pn);
+        add(s);
+    }
+
+    // ---- only what a scene needs ----
+    {
+        Scene s = picture("m5.needs", "Four panels, four sets of needs: what each stage costs",
+                          "untextured materials never sample; lambda only for mip filters; the pyramid only when a "
+                          "fragment has lambda > 0, once per texture; the shadow pass only for a light that casts",
+                          {9, 5, 4}, 288, 72);
+        for (int p = 0; p < 4; ++p) {
+            Panel pn = panel(cam({0.03, 0.05, 3.2}), {}, {}, 72 * p, 0, 72, 72);
+            pn.lights = {sun({-0.6, -0.7, -1}, {0.7, 0.7, 0.7})};
+            if (p == 0) pn.items.push_back(item(uv_sphere(24), plain(kRed)));
+            if (p == 1) {
+                pn.textures = {tex(Pattern::kChecker, 32, 16, 8)};
+                MaterialSpec m = plain(kRed);
+                m.texture = 0;
+                m.filter = Filter::kBilinear;
+                pn.items.push_back(item(uv_sphere(24), m));
+            }
+            if (p == 2) {
+                pn.textures = {tex(Pattern::kNoise, 4, 4)};
+                pn.items.push_back(item(facing_quad(1.0, 0, {0, 0}, {1, 1}), unlit(0, Filter::kTrilinear)));
+            }
+            if (p == 3) {
+                // Two floors share one texture (one pyramid); one light casts shadows, one does not.
+                pn.camera = cam({0.03, 1.2, 3.2}, {0.01, -0.5, -2});
+                pn.textures = {tex(Pattern::kFine, 64, 64)};
+                MaterialSpec m = plain(kFloor);
+                m.texture = 0;
+                m.filter = Filter::kTrilinear;
+                Item a = item(floor_quad(-1, 1.2, 1.5, -8, {4, 24}), m);
+                a.position = {-1.3, 0, 0};
+                Item b = a;
+                b.position = {1.3, 0, 0};
+                pn.items = {a, b};
+                pn.lights = {sun({-0.6, -0.7, -1}, {0.5, 0.5, 0.5}, true), sun({0.6, -0.7, -0.3}, {0.3, 0.3, 0.3})};
+                pn.shadows.resolution = 256;
+                pn.shadows.radius = 5;
+                pn.shadows.center = {0, -1, -3};
+            }
+            s.panels.push_back(pn);
+        }
+        add(s);
+    }
+
+    // ---- extreme input ----
+    {
+        Scene s = picture("m5.extreme_input", "NaN and infinite uv, huge coordinates, needles, a vertex behind the eye; near 1e-6, far 1e6",
+                          "NaN or infinite uv samples black, huge uv wraps exactly, a non-finite position drops its "
+                          "triangle, clipping keeps w > 0; nothing may crash, hang or write outside the image",
+                          {9, 5, 4, 1}, 192, 96);
+        Mesh m;
+        m.positions = {{-1.5, -1.3, 0}, {0.2, -1.4, 0}, {-0.6, 0.3, 0},            // good
+                       {0.3, -1.3, 0},  {1.6, -1.2, 0}, {0.9, 0.2, 0},              // NaN uv
+                       {-1.5, 0.5, 0},  {-0.2, 0.4, 0}, {-0.9, 1.6, 0},             // infinite uv
+                       {0.1, 0.5, 0},   {1.5, 0.4, 0},  {0.8, 1.5, 0},              // 1e300 uv
+                       {-1.4, 1.7, 0},  {1.5, 1.72, 0}, {1.5, 1.7200001, 0},        // a needle
+                       {kNaN, 0, 0},    {0.5, 0.5, 0},  {1e30, -1e30, 0.2},         // non-finite and huge
+                       {0.2, -0.1, 0.5}, {1.8, 1.6, -3}, {-1.6, 0.9, 5}};           // one behind the eye
+        m.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 0}, {17, 16, 1}, {18, 19, 20}, {0, 1, 99}};
+        m.uvs = {{0, 0},    {2, 0},  {1, 2},  {kNaN, 0},    {1, 1},        {0, kNaN},   {kInf, 0},  {1, -kInf}, {0, 0},
+                 {1e300, 0}, {1e300 + 1e285, 3}, {-1e300, 1e300}, {0, 0}, {5, 0}, {5, 1e-7}, {0, 0},     {0.5, 0.5}, {1e30, -1e30},
+                 {0, 0},    {1, 0},  {0, 1}};
+        m.normals.assign(m.positions.size(), Vec3{0, 0, 1});
+        MaterialSpec mat = plain({200, 200, 200}, {100, 100, 100}, 16);
+        mat.texture = 0;
+        mat.filter = Filter::kTrilinear;
+        mat.normal_map = 1;
+        Panel p0 = panel(cam({0.02, 0.03, 4}), {item(m, mat)}, {tex(Pattern::kChecker, 16, 16, 4), tex(Pattern::kBumps, 16, 16, 2)},
+                         0, 0, 96, 96);
+        p0.lights = {sun({-0.3, -0.4, -1}, {0.8, 0.8, 0.8}, true)};
+        p0.shadows.resolution = 128;
+        s.panels.push_back(p0);
+        // Near 1e-6 and far 1e6: a floor and a box seen from just above the floor.
+        Panel p1 = panel(cam({0.03, 0.4, 3}, {0.01, 0.1, -2}, 1e-6, 1e6), floor_and_box({0.2, 0.5, -0.5}, 0.5, 0.3),
+                         {tex(Pattern::kChecker, 16, 16, 4)}, 96, 0, 96, 96);
+        p1.items[0].mesh = floor_quad(0, 1e5, 1e5, -1e5, {1e5, 1e5});
+        p1.items[0].material.texture = 0;
+        p1.items[0].material.filter = Filter::kTrilinear;
+        p1.lights = {sun({-0.5, -1, -0.35}, {0.85, 0.85, 0.85}, true)};
+        p1.shadows.resolution = 256;
+        p1.shadows.radius = 3;
+        s.panels.push_back(p1);
+        add(s);
+    }
+
+    // ---- everything at once ----
+    {
+        Scene s = picture("m5.showcase", "Textured, normal-mapped, specular and shadowed: the whole milestone",
+                          "a checkered floor (trilinear), a brick box with a bump map, a shiny textured sphere, a "
+                          "shadow-casting light with PCF and a second light without shadows",
+                          {9, 5, 8, 6, 7}, 192, 128);
+        std::vector<TextureSpec> textures = {tex(Pattern::kChecker, 64, 64, 8), tex(Pattern::kBricks, 64, 64, 8),
+                                             tex(Pattern::kBumps, 64, 64, 4), tex(Pattern::kGradient, 32, 32)};
+        textures[0].a = {225, 220, 205};
+        textures[0].b = {90, 100, 120};
+        textures[1].a = {170, 80, 55};
+        textures[1].b = {200, 195, 185};
+        textures[3].a = {60, 120, 0};
+        textures[3].b = {230, 200, 0};
+        MaterialSpec floor_m = plain(kFloor);
+        floor_m.texture = 0;
+        Item floor = item(floor_quad(0, 3, 3, -3, {3, 3}), floor_m);
+        MaterialSpec box_m = plain(kBoxColor, {60, 60, 60}, 16);
+        box_m.texture = 1;
+        box_m.normal_map = 2;
+        Item box = item(box_mesh(), box_m);
+        box.position = {0.6, 0.6, -0.4};
+        box.size = {0.6, 0.6, 0.6};
+        box.angle = 0.5;
+        MaterialSpec ball_m = plain(kBlue, {220, 220, 220}, 48);
+        ball_m.texture = 3;
+        Item ball = item(uv_sphere(32), ball_m);
+        ball.position = {-1.0, 0.55, 0.5};
+        ball.size = {0.55, 0.55, 0.55};
+        Panel pn = panel(cam({0.4, 2.6, 5}, {0.01, 0.3, 0.02}, 0.5, 50), {floor, box, ball}, textures, 0, 0, 192, 128);
+        pn.lights = {sun({-0.6, -1, -0.45}, {0.75, 0.75, 0.7}, true), sun({0.7, -0.4, -0.2}, {0.2, 0.22, 0.3})};
+        pn.shadows.resolution = 1024;
+        pn.shadows.center = {0, 0.5, 0};
+        pn.shadows.radius = 3.6;
+        s.panels.push_back(pn);
+        s.demo = true;
+        add(s);
+    }
+    return all;
+}
+
+// ---- scene variants (grading): see "Scene variants (grading)" in checkpoints/README.md ----
+
+using Rng = cp::VariantRng;
+
+Scene vary(const Scene& pub, Rng& rng) {
+    Scene s = pub;
+    if (s.panels.empty()) return s;  // numbers: their case generators read variant_seed()
+    // The camera moved a little (the same move for every panel, so panels that must agree still
+    // do), and the lights turned a little: the same ideas on other numbers.
+    if (s.id != kFillScene) {
+        const Vec3 d{rng.uniform(-10, 10) / 100.0, rng.uniform(-10, 10) / 100.0, rng.uniform(-10, 10) / 100.0};
+        for (Panel& p : s.panels) p.camera.eye = p.camera.eye + d;
+        // (The light that is behind every surface stays exactly behind it.)
+        const double turn = rng.uniform(-8, 8) / 100.0;
+        for (Panel& p : s.panels) {
+            for (LightSpec& l : p.lights) {
+                if (s.id != "m5.light_behind") l.direction.x += turn;
+            }
+        }
+    }
+    // The ready-made triangles moved by up to two pixels, the same move for the k-th vertex.
+    for (Panel& p : s.panels) {
+        if (p.screen_tris.empty()) continue;
+        std::array<Vec3, 3> move;
+        for (Vec3& m : move) m = {rng.uniform(-200, 200) / 100.0, rng.uniform(-200, 200) / 100.0, 0};
+        for (ScreenTri& t : p.screen_tris) {
+            for (int k = 0; k < 3; ++k) t.screen[std::size_t(k)] = t.screen[std::size_t(k)] + move[std::size_t(k)];
+        }
+    }
+    // Generated textures with other numbers.
+    const std::uint32_t seed = std::uint32_t(rng.uniform(2, 1000));
+    for (Panel& p : s.panels) {
+        for (TextureSpec& t : p.textures) t.seed += seed;
+    }
+    return s;
+}
+
+const std::vector<Scene>& public_scenes() {
+    static const std::vector<Scene> all = build();
+    return all;
+}
+
+// Made on first use: the checkpoints register (and list the scenes) during static initialization.
+cp::SceneVariants<Scene>& variants() {
+    static cp::SceneVariants<Scene> all(public_scenes, vary);
+    return all;
+}
+
+LevelData level_from(const raster::Image& img) {
+    LevelData l;
+    l.width = img.width();
+    l.height = img.height();
+    for (int y = 0; y < l.height; ++y) {
+        for (int x = 0; x < l.width; ++x) {
+            const Color c = img.at(x, y);
+            l.texels.push_back({double(c.r), double(c.g), double(c.b)});
+        }
+    }
+    return l;
+}
+
+std::uint32_t numbers_seed(const char* id) {
+    if (variant_seed() == 0) return 0;
+    Rng rng(variant_seed(), id);
+    return std::uint32_t(rng.uniform(1, 100000));
+}
+
+}  // namespace
+
+std::vector<WrapCase> wrap_cases() {
+    std::vector<WrapCase> cases;
+    const double is[] = {0, 3, 4, 5, 9, -1, -4, -5, -6, -9, 13, 1e300, -1e300, 9007199254740993.0, -7.0e15, kNaN, kInf, -kInf};
+    for (int mode = 0; mode < 3; ++mode) {
+        for (int n : {4, 5}) {
+            for (double i : is) cases.push_back({i, n, static_cast<Wrap>(mode)});
+        }
+        cases.push_back({0, 1, static_cast<Wrap>(mode)});
+        cases.push_back({-3, 1, static_cast<Wrap>(mode)});
+        cases.push_back({1e300, 1, static_cast<Wrap>(mode)});
+    }
+    if (variant_seed() != 0) {
+        Rng rng(variant_seed(), "m5.wrap");
+        for (int k = 0; k < 18; ++k) {
+            cases.push_back({double(rng.uniform(-100000, 100000)), rng.uniform(1, 17), static_cast<Wrap>(k % 3)});
+        }
+    }
+    return cases;
+}
+
+LevelData sample_level(int which) {
+    LevelData l;
+    if (which == 2) return l;
+    l.width = which == 0 ? 4 : 5;
+    l.height = which == 0 ? 2 : 3;
+    const std::uint32_t seed = numbers_seed("m5.sampling");
+    for (int j = 0; j < l.height; ++j) {
+        for (int i = 0; i < l.width; ++i) {
+            // Not linear in i or j, so swapped weights or a shifted center cannot come out right.
+            Vec3 t{double(10 + 60 * i + 3 * j), double(200 - 50 * j - 7 * i * i), double(30 + 17 * i * j + 40 * j)};
+            if (seed != 0) {
+                t = {double(hash_byte(std::uint32_t(i), std::uint32_t(j), 0, seed)),
+                     double(hash_byte(std::uint32_t(i), std::uint32_t(j), 1, seed)),
+                     double(hash_byte(std::uint32_t(i), std::uint32_t(j), 2, seed))};
+            }
+            l.texels.push_back(t);
+        }
+    }
+    return l;
+}
+
+std::vector<FetchCase> fetch_cases() {
+    const Wrap R = Wrap::kRepeat, C = Wrap::kClampToEdge, M = Wrap::kMirroredRepeat;
+    return {{0, 0, 0, R, R},     {0, 3, 1, R, R},      {0, -1, 0, R, R},    {0, 4, -1, R, R},     {0, 4, 1, C, C},
+            {0, -2, -1, M, M},   {0, -5, 7, M, R},     {0, 1e300, 3, R, M}, {0, -1e300, -3, C, M}, {1, 7, -4, M, C},
+            {1, -6, 5, R, M},    {1, 2, 1, C, R},      {2, 0, 0, R, R},     {0, kNaN, 0, R, R},   {1, 3, -kInf, C, C}};
+}
+
+std::vector<SampleCase> sample_cases() {
+    const Wrap R = Wrap::kRepeat, C = Wrap::kClampToEdge, M = Wrap::kMirroredRepeat;
+    std::vector<SampleCase> cases = {
+        {0, {0.125, 0.25}, R, R},        // the center of texel (0, 0)
+        {0, {0.625, 0.75}, R, R},        // the center of texel (2, 1)
+        {0, {0.375, 0.25}, C, C},        // the center of texel (1, 0)
+        {0, {0.3, 0.6}, R, R},           // between centers
+        {0, {0.3, 0.6}, C, M},
+        {0, {0.0, 0.0}, R, R},           // the corner: repeat blends the four corner texels
+        {0, {0.0, 0.0}, C, C},           // clamp: texel (0, 0)
+        {0, {0.5, 0.5}, R, R},           // a texel corner inside
+        {0, {-0.1, -1.3}, R, R},         // negative
+        {0, {-0.1, -1.3}, M, M},
+        {0, {1.9, 2.2}, C, C},
+        {0, {1.9, 2.2}, M, R},
+        {0, {1e7 + 0.25, 0.625}, R, R},  // huge but exact in double
+        {0, {1e7 + 0.375, 1e7 + 0.125}, M, M},
+        {0, {1e300, 0.3}, R, R},         // wraps exactly
+        {0, {kNaN, 0.5}, R, R},          // black
+        {0, {kInf, 0.5}, R, R},
+        {0, {0.5, -kInf}, C, C},
+        {0, {1e308, 0.5}, R, R},         // u * w overflows: black
+        {1, {0.5, 0.5}, R, R},           // a 5 x 3 level: the center of texel (2, 1)
+        {1, {0.13, 0.91}, R, R},
+        {1, {-0.77, 0.2}, M, C},
+        {1, {0.95, 0.05}, C, R},
+        {2, {0.5, 0.5}, R, R},           // no texels: black
+    };
+    if (variant_seed() != 0) {
+        Rng rng(variant_seed(), "m5.sampling.uv");
+        for (int k = 0; k < 8; ++k) {
+            cases.push_back({k % 2, {rng.uniform(-3000, 3000) / 1024.0, rng.uniform(-3000, 3000) / 1024.0},
+                             static_cast<Wrap>(rng.uniform(0, 2)), static_cast<Wrap>(rng.uniform(0, 2))});
+        }
+    }
+    return cases;
+}
+
+std::vector<LevelData> mip_bases() {
+    const std::uint32_t seed = numbers_seed("m5.mipmaps");
+    auto noise = [seed](int w, int h, std::uint32_t s) {
+        TextureSpec t;
+        t.pattern = Pattern::kNoise;
+        t.width = w;
+        t.height = h;
+        t.seed = s + seed;
+        return level_from(texture_image(t));
+    };
+    LevelData one;
+    one.width = one.height = 1;
+    one.texels = {{77, 155, 233}};
+    return {noise(8, 8, 11), one, noise(3, 5, 12), noise(7, 1, 13), noise(5, 2, 14)};
+}
+
+std::vector<LodCase> lod_cases() {
+    std::vector<LodCase> cases = {
+        // Screen-aligned, w = 1: du/dx = dv/dy = 1/100 exactly; 256 texels: rho = 2.56.
+        {{Vec3{0, 0, 0}, Vec3{100, 0, 0}, Vec3{0, 100, 0}}, {1, 1, 1}, {Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}}, 30.5, 40.5, 256, 256},
+        // The same triangle in perspective.
+        {{Vec3{0, 0, 0}, Vec3{100, 0, 0}, Vec3{0, 100, 0}}, {1, 2, 4}, {Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}}, 20.5, 30.5, 256, 256},
+        // A turned triangle, a texture 64 wide and 32 high.
+        {{Vec3{10.3, 5.1, 0}, Vec3{90.2, 30.7, 0}, Vec3{25.6, 80.4, 0}}, {2, 1.5, 3}, {Vec2{0.1, 0.2}, Vec2{3.1, 0.4}, Vec2{0.5, 2.7}},
+         40.5, 38.5, 64, 32},
+        // Strong perspective.
+        {{Vec3{5.5, 60.2, 0}, Vec3{120.4, 58.7, 0}, Vec3{62.3, 2.2, 0}}, {0.5, 0.7, 20}, {Vec2{0, 4}, Vec2{4, 4}, Vec2{2, 0}},
+         60.5, 40.5, 128, 128},
+        // Zero area: all zero, lambda -infinity.
+        {{Vec3{0, 0, 0}, Vec3{10, 10, 0}, Vec3{20, 20, 0}}, {1, 1, 1}, {Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}}, 5.5, 5.5, 64, 64},
+        // B <= 0 where it is asked (a vertex behind the eye): all zero.
+        {{Vec3{0, 0, 0}, Vec3{100, 0, 0}, Vec3{0, 100, 0}}, {1, 1, -1}, {Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}}, 5.5, 90.5, 64, 64},
+        // Magnified: lambda < 0.
+        {{Vec3{0, 0, 0}, Vec3{100, 0, 0}, Vec3{0, 100, 0}}, {1, 1.2, 1.1}, {Vec2{0, 0}, Vec2{0.1, 0}, Vec2{0, 0.1}}, 30.5, 30.5, 64, 64},
+        // uv near 1e7: the derivatives are those of the first case.
+        {{Vec3{0, 0, 0}, Vec3{100, 0, 0}, Vec3{0, 100, 0}}, {1, 1, 1}, {Vec2{1e7, 1e7}, Vec2{1e7 + 1, 1e7}, Vec2{1e7, 1e7 + 1}}, 30.5,
+         40.5, 256, 256},
+    };
+    if (variant_seed() != 0) {
+        Rng rng(variant_seed(), "m5.lod");
+        for (int k = 0; k < 4; ++k) {
+            LodCase c;
+            for (int i = 0; i < 3; ++i) {
+                c.screen[std::size_t(i)] = {rng.uniform(0, 12000) / 100.0, rng.uniform(0, 9000) / 100.0, 0};
+                c.w[std::size_t(i)] = rng.uniform(50, 2000) / 100.0;
+                c.uv[std::size_t(i)] = {rng.uniform(-400, 400) / 100.0, rng.uniform(-400, 400) / 100.0};
+            }
+            c.x = (c.screen[0].x + c.screen[1].x + c.screen[2].x) / 3;
+            c.y = (c.screen[0].y + c.screen[1].y + c.screen[2].y) / 3;
+            c.width = 1 << rng.uniform(2, 8);
+            c.height = 1 << rng.uniform(2, 8);
+            cases.push_back(c);
+        }
+    }
+    return cases;
+}
+
+std::vector<LambdaCase> lambda_cases() {
+    std::vector<LambdaCase> cases = {
+        {1.0 / 64, 0, 0, 1.0 / 64, 64, 64},    // one texel per pixel: lambda 0
+        {0.01, 0, 0, 0.01, 256, 256},          // rho 2.56
+        {0.02, 0.01, -0.005, 0.03, 128, 64},   // the larger of the two lengths, in texel units
+        {0.1, 0, 0, 0.001, 16, 16},            // anisotropic: x decides
+        {0, 0.001, 0.25, 0, 32, 8},            // y decides
+        {0, 0, 0, 0, 64, 64},                  // rho 0: -infinity
+        {1e-3, 0, 0, 0, 1, 1},                 // magnified: negative
+        {3, 4, 0, 0, 1, 1},                    // rho 5
+    };
+    if (variant_seed() != 0) {
+        Rng rng(variant_seed(), "m5.lod.lambda");
+        for (int k = 0; k < 4; ++k) {
+            cases.push_back({rng.uniform(-1000, 1000) / 1e4, rng.uniform(-1000, 1000) / 1e4, rng.uniform(-1000, 1000) / 1e4,
+                             rng.uniform(-1000, 1000) / 1e4, 1 << rng.uniform(0, 9), 1 << rng.uniform(0, 9)});
+        }
+    }
+    return cases;
+}
+
+std::vector<FilterCase> filter_cases() {
+    std::vector<FilterCase> cases;
+    const std::pair<Vec2, double> main[] = {
+        {{0.3, 0.6}, -1},    {{0.3, 0.6}, 0},     {{0.41, 0.27}, 0.5}, {{0.41, 0.27}, 1.0}, {{0.7, 0.2}, 1.49},
+        {{0.7, 0.2}, 1.51},  {{0.15, 0.85}, 2.7}, {{0.55, 0.45}, 3},   {{0.55, 0.45}, 5},   {{0.2, 0.3}, 1e9},
+        {{0.2, 0.3}, kInf},  {{0.2, 0.3}, kNaN},  {{0.2, 0.3}, -kInf}, {{-1.3, 2.45}, 1.25}};
+    for (int f = 0; f < 4; ++f) {
+        for (const auto& [uv, lambda] : main) cases.push_back({0, static_cast<Filter>(f), uv, lambda});
+    }
+    // A 3 x 5 texture (levels 3x5, 1x2, 1x1), a 1x1 one, and a 7 x 1 one.
+    for (Filter f : {Filter::kNearestMip, Filter::kTrilinear}) {
+        for (double lambda : {0.7, 1.3, 2.0, 7.0}) cases.push_back({2, f, {0.62, 0.33}, lambda});
+        for (double lambda : {-0.5, 0.6, 2.0}) cases.push_back({1, f, {0.25, 0.75}, lambda});
+        for (double lambda : {0.4, 1.6, 9.0}) cases.push_back({3, f, {0.81, 0.5}, lambda});
+    }
+    if (variant_seed() != 0) {
+        Rng rng(variant_seed(), "m5.filters");
+        for (int k = 0; k < 8; ++k) {
+            cases.push_back({0, static_cast<Filter>(2 + k % 2), {rng.uniform(-2000, 2000) / 1000.0, rng.uniform(-2000, 2000) / 1000.0},
+                             rng.uniform(1, 400) / 100.0});
+        }
+    }
+    return cases;
+}
+
+std::vector<PhongCase> phong_cases() {
+    const Vec3 base{200, 150, 100}, spec{255, 255, 255}, one{1, 1, 1};
+    std::vector<PhongCase> cases = {
+        {base, spec, 32, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}, one},                   // head on: c = 1, H = N
+        {base, spec, 32, {0, 0, 1}, {0, 0, 1}, {0, std::sqrt(3.0), 1}, one},     // light 60 degrees off: N.H = cos 30
+        {base, spec, 32, {0, 0, 1}, {0, 0, 1}, {0, 0, -1}, one},                  // light behind: nothing
+        {base, spec, 8, {0, 0, 1}, {0, 0, 1}, {1, 0, -0.2}, one},                 // behind, but H in front: still nothing
+        {base, spec, 16, {0, 0, 3}, {0, 4, 4}, {0, -1, 2}, one},                  // long vectors: normalize all three
+        {base, spec, 64, {0.3, 0.1, 1}, {-0.2, 0.5, 1}, {0.6, -0.2, 0.7}, {0.5, 0.8, 1}},  // colored light
+        {base, {0, 0, 0}, 32, {0, 0, 1}, {0, 0, 1}, {0, 0.6, 0.8}, one},          // no specular color
+        {base, {80, 120, 160}, 4, {0, 1, 0}, {1, 1, 0}, {-1, 0.4, 0}, {0.7, 0.7, 0.7}},
+        {base, spec, 32, {0, 0, 1}, {0, 0, 1}, {1, 0, 0}, one},                   // grazing: c = 0
+        {base, spec, 32, {0, 0, 0}, {0, 0, 1}, {0, 0, 1}, one},                   // zero normal
+        {base, spec, 32, {0, 0, 1}, {0, 0, 0}, {0, 0, 1}, one},                   // zero view vector
+        {base, spec, 16, {0, 0, 1}, {0, -0.6, -0.8}, {0, 0.6, 0.8}, one},         // V = -L: H is zero
+        {base, spec, 1, {0, 0, 1}, {0.8, 0, 0.6}, {-0.8, 0, 0.6}, one},           // shininess 1
+    };
+    if (variant_seed() != 0) {
+        Rng rng(variant_seed(), "m5.blinn_phong");
+        auto dir = [&rng] { return Vec3{rng.uniform(-100, 100) / 50.0, rng.uniform(-100, 100) / 50.0, rng.uniform(1, 100) / 50.0}; };
+        for (int k = 0; k < 6; ++k) {
+            cases.push_back({{double(rng.uniform(0, 255)), double(rng.uniform(0, 255)), double(rng.uniform(0, 255))},
+                             {double(rng.uniform(0, 255)), double(rng.uniform(0, 255)), double(rng.uniform(0, 255))},
+                             double(rng.uniform(1, 128)), dir(), dir(), dir(), {0.8, 0.7, 0.9}});
+        }
+    }
+    return cases;
+}
+
+std::vector<FrameCase> frame_cases() {
+    std::vector<FrameCase> cases = {
+        {{Vec3{0, 0, 0}, Vec3{2, 0, 0}, Vec3{0, 3, 0}}, {Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}}},          // T = (2,0,0), B = (0,3,0)
+        {{Vec3{0, 0, 0}, Vec3{2, 0, 0}, Vec3{0, 3, 0}}, {Vec2{0, 1}, Vec2{1, 1}, Vec2{0, 0}}},          // v flipped: B = (0,-3,0)
+        {{Vec3{1, 2, 3}, Vec3{3, 2, 2}, Vec3{1.5, 4, 3.5}}, {Vec2{0.1, 0.2}, Vec2{0.9, 0.3}, Vec2{0.6, 1.4}}},  // sheared
+        {{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}, {Vec2{0.3, 0.3}, Vec2{0.3, 0.3}, Vec2{0.3, 0.3}}},  // all equal: none
+        {{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}, {Vec2{0, 0}, Vec2{0.5, 0.5}, Vec2{1, 1}}},     // on one line: none
+        {{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}, {Vec2{0, 0}, Vec2{kNaN, 0}, Vec2{0, 1}}},      // NaN: none
+        {{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}, {Vec2{0, 0}, Vec2{1e-300, 0}, Vec2{0, 1e-300}}},  // r underflows to 0: none
+        {{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}, {Vec2{1e7, 1e7}, Vec2{1e7 + 1, 1e7}, Vec2{1e7, 1e7 + 1}}},
+    };
+    if (variant_seed() != 0) {
+        Rng rng(variant_seed(), "m5.normal_maps.frame");
+        for (int k = 0; k < 4; ++k) {
+            FrameCase c;
+            for (int i = 0; i < 3; ++i) {
+                c.p[std::size_t(i)] = {rng.uniform(-300, 300) / 100.0, rng.uniform(-300, 300) / 100.0, rng.uniform(-300, 300) / 100.0};
+                c.uv[std::size_t(i)] = {rng.uniform(-200, 200) / 100.0, rng.uniform(-200, 200) / 100.0};
+            }
+            cases.push_back(c);
+        }
+    }
+    return cases;
+}
+
+std::vector<PerturbCase> perturb_cases() {
+    const Vec3 z{0, 0, 1};
+    const double h = 127.5;
+    std::vector<PerturbCase> cases = {
+        {{2, 0, 0}, {0, 3, 0}, true, z, {h, h, 255}},            // flat texel: n
+        {{2, 0, 0}, {0, 3, 0}, true, z, {255, h, h}},            // along T
+        {{2, 0, 0}, {0, 3, 0}, true, z, {h, 255, h}},            // along B
+        {{2, 0, 0}, {0, -3, 0}, true, z, {h, 255, h}},           // B the other way: B' follows it
+        {{2, 0, 0}, {0, 3, 0}, true, z, {200, 60, 220}},         // a typical texel
+        {{1, 0, 0.5}, {0, 1, 0.7}, true, z, {180, 90, 230}},     // T and B not in the surface
+        {{1, 0, 0}, {0.8, 0.6, 0}, true, z, {90, 200, 210}},     // B not perpendicular to T (sheared uv)
+        {{1, 0, 0}, {0.8, 0.6, 0}, true, unit(Vec3{0.3, -0.2, 0.9}), {160, 100, 235}},
+        {{}, {}, false, z, {255, 0, 128}},                       // no frame: n
+        {{2, 0, 0}, {0, 3, 0}, true, z, {h, h, h}},              // the zero vector: n
+        {{0, 0, 3}, {0, 3, 0}, true, z, {200, 60, 220}},         // T along n: T' is zero, n
+        {{2, 0, 0}, {0, 3, 0}, true, z, {kNaN, 60, 220}},        // NaN texel: n
+        {{2, 0, 0}, {0, 3, 0}, true, z, {0, 0, 0}},              // (-1, -1, -1)
+    };
+    if (variant_seed() != 0) {
+        Rng rng(variant_seed(), "m5.normal_maps.perturb");
+        for (int k = 0; k < 4; ++k) {
+            auto v = [&rng] { return Vec3{rng.uniform(-100, 100) / 40.0, rng.uniform(-100, 100) / 40.0, rng.uniform(-100, 100) / 40.0}; };
+            cases.push_back({v(), v(), true, unit(v() + Vec3{0, 0, 3}),
+                             {double(rng.uniform(0, 255)), double(rng.uniform(0, 255)), double(rng.uniform(128, 255))}});
+        }
+    }
+    return cases;
+}
+
+std::vector<LightMatrixCase> light_matrix_cases() {
+    return {{{0, -1, 0}, {1, 0, 2}, 2},
+            {{-1, -2, -0.5}, {0, 0, 0}, 4},
+            {{0.05, -0.995, 0.08}, {0, 1, 0}, 3},   // |y| > 0.99 after normalizing: up = (1, 0, 0)
+            {{0.1, -0.98, 0.2}, {0, 1, 0}, 3},      // |y| just below 0.99: up = (0, 1, 0)
+            {{3, -4, 0}, {0.5, -0.25, 1}, 1.5},     // not of unit length
+            {{0, 0, 0}, {0, 0, 0}, 4},              // zero: the zero matrix
+            {{kNaN, -1, 0}, {0, 0, 0}, 4}};         // not finite: the zero matrix
+}
+
+TinyMap tiny_map() {
+    TinyMap m;
+    auto key = [](double d) { return std::bit_cast<std::uint32_t>(static_cast<float>(d)); };
+    m.keys.assign(16, key(0.5));       // the floor, y = 0: d = (2 - y) / 4
+    for (int at : {1 * 4 + 1, 1 * 4 + 2, 2 * 4 + 1}) m.keys[std::size_t(at)] = key(0.25);  // an occluder at y = 1
+    m.keys[0 * 4 + 3] = 0xFFFFFFFFu;   // never drawn
+    m.keys[3 * 4 + 3] = 0xFFFFFFFFu;
+    return m;
+}
+
+std::vector<ShadowCase> shadow_cases() {
+    const Vec3 up{0, 1, 0};
+    const double s5 = std::sqrt(1 - 0.04), s6 = std::sqrt(1 - 1e-4);
+    std::vector<ShadowCase> cases = {
+        {{1.5, 0, -1.5}, up, 0.02, 0.02, false},      // on the floor, texel (row 0, col 0): lit
+        {{0.5, 0, -0.5}, up, 0.02, 0.02, false},      // under the occluder (1, 1): shadowed
+        {{1.5, -0.001, -0.5}, up, 0.02, 0.02, false}, // just below the floor's stored depth: the bias keeps it lit
+        {{-1.5, -0.1, -1.5}, {s5, 0.2, 0}, 0.02, 0.02, false},   // c = 0.2: the slope term keeps it lit
+        {{-1.5, -0.3, -0.5}, {s6, 0.01, 0}, 0.02, 0.02, false},  // c = 0.01: tan capped at 10, shadowed
+        {{2.5, 0, 0}, up, 0.02, 0.02, false},         // outside the map: lit
+        {{0, 0, 3}, up, 0.02, 0.02, true},            // outside, with PCF: lit
+        {{1.5, -2, 1.5}, up, 0.02, 0.02, false},      // a texel never drawn: lit
+        {{-0.5, 0, 0.5}, up, 0.02, 0.02, true},       // PCF at (2, 2): 6 of 9 lit
+        {{1.5, 0, -1.5}, up, 0.02, 0.02, true},       // PCF at the corner (0, 0): 8 of 9 (outside is lit)
+        {{0.5, 1.5, -0.5}, up, 0.02, 0.02, false},    // above the occluder: lit
+        {{0.5, 0, 0.5}, up, 0.02, 0.02, true},        // PCF at (1, 2): 5 of 9 lit
+        {{-0.5, 0, -0.5}, up, 0, 0, false},           // no bias at all, under the occluder (2, 1): shadowed
+    };
+    if (variant_seed() != 0) {
+        Rng rng(variant_seed(), "m5.shadow_lookup");
+        for (int k = 0; k < 6; ++k) {
+            // Texel centers only (the row and column are never a rounding question).
+            const double x = rng.uniform(-2, 1) + 0.5, z = rng.uniform(-2, 1) + 0.5;
+            cases.push_back({{x, rng.uniform(-40, 150) / 100.0, z}, up, 0.02, 0.02, rng.coin()});
+        }
+    }
+    return cases;
+}
+
+std::vector<Group> prerequisite_groups(const Scene& s) {
+    std::vector<Group> need;
+    auto add = [&need](Group g) {
+        if (std::find(need.begin(), need.end(), g) == need.end()) need.push_back(g);
+    };
+    auto material = [&](const MaterialSpec& m) {
+        if (m.texture >= 0) {
+            add(Group::kWrap);
+            add(Group::kSampling);
+            add(Group::kFilter);
+            if (m.filter == Filter::kNearestMip || m.filter == Filter::kTrilinear) {
+                add(Group::kMipmaps);
+                add(Group::kLod);
+            }
+        }
+        if (m.lit) add(Group::kBlinnPhong);
+        if (m.lit && m.normal_map >= 0) add(Group::kTangent);
+    };
+    for (const Panel& p : s.panels) {
+        for (const Item& it : p.items) material(it.material);
+        for (const ScreenTri& t : p.screen_tris) material(t.material);
+        for (const LightSpec& l : p.lights) {
+            if (l.casts_shadows && !p.items.empty()) add(Group::kShadow);
+        }
+    }
+    std::vector<Group> out;
+    for (Group g : need) {
+        if (std::find(s.groups.begin(), s.groups.end(), g) == s.groups.end()) out.push_back(g);
+    }
+    std::sort(out.begin(), out.end());  // in the order of the TODOs
+    return out;
+}
+
+std::string prerequisite_key(Group g) { return "pre" + std::to_string(static_cast<int>(g)) + "."; }
+
+std::string prerequisite_checkpoint(Group g) {
+    for (const Scene& s : public_scenes()) {
+        if (std::find(s.groups.begin(), s.groups.end(), g) != s.groups.end()) return s.id;
+    }
+    return "m5";
+}
+
+const std::vector<Scene>& scenes() { return variants().scenes(); }
+
+std::uint64_t variant_seed() { return variants().seed(); }
+
+const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
+
+void use_variant(std::uint64_t seed) { variants().use(seed); }
+
+}  // namespace m5cp
