@@ -146,10 +146,13 @@ void build_mipmaps(Texture& texture) {
 // BEGIN SOLUTION
 namespace {
 
-// The three planes of the perspective-correct uv over the screen: U = u / w, V = v / w and
-// Q = 1 / w are affine in x and y (sums of the screen weights, which are). Each is stored as
-// its value at vertex 0 and its two slopes, so fill_triangle builds them once per triangle and
-// evaluates them per pixel with six multiply-adds.
+// The three planes of the perspective-correct uv over the screen: U = (u - u0) / w,
+// V = (v - v0) / w and Q = 1 / w are affine in x and y (sums of the screen weights, which
+// are). Each is stored as its value at vertex 0 and its two slopes, so fill_triangle builds
+// them once per triangle and evaluates them per pixel with six multiply-adds. Taking uv
+// relative to vertex 0 changes no derivative, but keeps the digits: near u = 1e7, U_x Q - U Q_x
+// would subtract two numbers of about 1e7 to leave one of about 0.01, and equal uv give
+// exactly zero.
 struct UvPlanes {
     double x0 = 0, y0 = 0;
     double u = 0, u_x = 0, u_y = 0;
@@ -170,14 +173,15 @@ UvPlanes uv_planes(const std::array<Vec2, 3>& p, const std::array<double, 3>& w,
     const double q[3] = {1 / w[0], 1 / w[1], 1 / w[2]};
     planes.x0 = p[0].x;
     planes.y0 = p[0].y;
-    planes.u = uv[0].x * q[0];
-    planes.v = uv[0].y * q[0];
-    planes.q = q[0];
+    planes.q = q[0];  // U and V are 0 at vertex 0
+    for (int i = 1; i < 3; ++i) {
+        const double u = (uv[i].x - uv[0].x) * q[i], v = (uv[i].y - uv[0].y) * q[i];
+        planes.u_x += lx[i] * u;
+        planes.u_y += ly[i] * u;
+        planes.v_x += lx[i] * v;
+        planes.v_y += ly[i] * v;
+    }
     for (int i = 0; i < 3; ++i) {
-        planes.u_x += lx[i] * uv[i].x * q[i];
-        planes.u_y += ly[i] * uv[i].x * q[i];
-        planes.v_x += lx[i] * uv[i].y * q[i];
-        planes.v_y += ly[i] * uv[i].y * q[i];
         planes.q_x += lx[i] * q[i];
         planes.q_y += ly[i] * q[i];
     }
@@ -185,7 +189,7 @@ UvPlanes uv_planes(const std::array<Vec2, 3>& p, const std::array<double, 3>& w,
     return planes;
 }
 
-// The quotient rule at (x, y): du/dx = (U_x Q - U Q_x) / Q^2, and likewise.
+// The quotient rule at (x, y): du/dx = (U_x Q - U Q_x) / Q^2, and likewise (u = u0 + U / Q).
 UvDerivatives derivatives_at(const UvPlanes& planes, double x, double y) {
     if (!planes.valid) return {};
     const double dx = x - planes.x0, dy = y - planes.y0;
@@ -318,7 +322,7 @@ Vec3 perturb_normal(const TangentFrame& frame, Vec3 n, Vec3 texel) {
     if (t == Vec3{}) return n;
     Vec3 b = raster::cross(n, t);
     if (raster::dot(b, frame.bitangent) < 0) b = -b;
-    const Vec3 m = texel * (2.0 / 255) - Vec3{1, 1, 1};
+    const Vec3 m = texel * 2.0 / 255 - Vec3{1, 1, 1};  // in this order, the texel 127.5 maps to 0 exactly
     const Vec3 mapped = unit_or_zero(t * m.x + b * m.y + n * m.z);
     return mapped == Vec3{} ? n : mapped;
     // SKELETON: return {};
@@ -578,7 +582,8 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
         state.material = &material;
         state.tangent = {};
         const bool lit = material.lit;
-        const bool normal_mapped = lit && material.normal_map;
+        const bool normal_mapped = material.normal_map != nullptr;  // its frames need world positions and uv
+        const bool need_world = lit || normal_mapped;
         const bool need_uv = material.texture || normal_mapped;
         const int n = static_cast<int>(mesh.positions.size());
 
@@ -604,10 +609,8 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
             is_finite[i] = finite(clip[i]);
             is_inside[i] = is_finite[i] && inside(clip[i]);
             if (is_inside[i]) sv.screen = m3::to_screen(clip[i], width, height);
-            if (lit) {
-                sv.world = m3::transform_point(object.model, position);
-                sv.normal = unit_or_zero(m3::transform_direction(to_world_normal, (*normals)[i]));
-            }
+            if (need_world) sv.world = m3::transform_point(object.model, position);
+            if (lit) sv.normal = unit_or_zero(m3::transform_direction(to_world_normal, (*normals)[i]));
             if (need_uv && i < static_cast<int>(mesh.uvs.size())) sv.uv = mesh.uvs[i];
         }
 
