@@ -235,7 +235,7 @@ m4r::Frame new_frame(int width, int height) {
 
 // ---- TODO 1: wrapping ----
 
-TEST_CASE("m5 oracle: wrap_index agrees with walking the table, for every mode and size", "[m5][wrap]") {
+TEST_CASE("wrap_index agrees with walking the table, for every mode and size", "[m5][wrap]") {
     for (int n : {1, 2, 3, 5, 8}) {
         for (Wrap mode : kModes) {
             for (long long i = -60; i <= 60; ++i) {
@@ -246,10 +246,12 @@ TEST_CASE("m5 oracle: wrap_index agrees with walking the table, for every mode a
     }
 }
 
-TEST_CASE("m5 oracle: wrap_index of huge and non-finite indices", "[m5][wrap][extreme]") {
+TEST_CASE("wrap_index of huge and non-finite indices", "[m5][wrap][extreme]") {
     const double huge[] = {1e300, -1e300, 9007199254740993.0 /* rounds to 2^53 */, 9007199254740994.0, -9007199254740994.0,
-                           1e16 + 2, -(1e16 + 2), 123456789012345678.0, 4.5e15 + 1};
-    for (int n : {1, 3, 5, 7, 8, 640}) {
+                           1e16 + 2, -(1e16 + 2), 123456789012345678.0, 4.5e15 + 1,
+                           4503599627370495.0 /* 2^52 - 1 */, -4503599627370495.0, 4503599627370496.0, -4503599627370497.0,
+                           4503599627370498.0, 1e9 + 7, -(1e9 + 7), 2147483647.0, -2147483649.0};
+    for (int n : {1, 3, 5, 7, 8, 640, 16384, 1000003}) {
         for (double i : huge) {
             INFO("n = " << n << ", i = " << i);
             const long long r = exact_mod(i, n);
@@ -269,7 +271,7 @@ TEST_CASE("m5 oracle: wrap_index of huge and non-finite indices", "[m5][wrap][ex
     CHECK(exact_mod(1e15, 7) == static_cast<long long>(1000000000000000LL % 7));
 }
 
-TEST_CASE("m5 oracle: fetch wraps u and v independently on a 3x5 level", "[m5][wrap]") {
+TEST_CASE("fetch wraps u and v independently on a 3x5 level", "[m5][wrap]") {
     const ref::Level l = random_level(3, 5, 7);
     for (Wrap wu : kModes) {
         for (Wrap wv : kModes) {
@@ -286,7 +288,7 @@ TEST_CASE("m5 oracle: fetch wraps u and v independently on a 3x5 level", "[m5][w
 
 // ---- TODO 2: sampling ----
 
-TEST_CASE("m5 oracle: nearest reads the texel whose square holds the point", "[m5][sample]") {
+TEST_CASE("nearest reads the texel whose square holds the point", "[m5][sample]") {
     const ref::Level l = random_level(3, 5, 11);
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> coord(-3, 3);
@@ -306,7 +308,7 @@ TEST_CASE("m5 oracle: nearest reads the texel whose square holds the point", "[m
     CHECK(ref::sample_nearest(l, {1.5 / 3, 2.5 / 5}, Wrap::kRepeat, Wrap::kRepeat) == l.texels[2 * 3 + 1]);
 }
 
-TEST_CASE("m5 oracle: bilinear equals the sum of tent weights", "[m5][sample]") {
+TEST_CASE("bilinear equals the sum of tent weights", "[m5][sample]") {
     for (auto [w, h] : {std::pair{3, 5}, std::pair{1, 1}, std::pair{8, 8}, std::pair{7, 2}}) {
         const ref::Level l = random_level(w, h, 100 + w * h);
         std::mt19937 rng(w * 31 + h);
@@ -330,7 +332,7 @@ TEST_CASE("m5 oracle: bilinear equals the sum of tent weights", "[m5][sample]") 
     }
 }
 
-TEST_CASE("m5 oracle: a texture coordinate near 1e7 in double, and what float does to it", "[m5][sample][extreme]") {
+TEST_CASE("a texture coordinate near 1e7 in double, and what float does to it", "[m5][sample][extreme]") {
     // A 64-texel ramp: texel i has red level 4 i.
     ref::Level ramp;
     ramp.width = 64;
@@ -355,7 +357,7 @@ TEST_CASE("m5 oracle: a texture coordinate near 1e7 in double, and what float do
     }
 }
 
-TEST_CASE("m5 oracle: huge, infinite and NaN texture coordinates", "[m5][sample][extreme]") {
+TEST_CASE("huge, infinite and NaN texture coordinates", "[m5][sample][extreme]") {
     const ref::Level l = random_level(3, 5, 21);
     // 1e300 wraps exactly: x = 1e300 * 3 (rounded) is a whole number whose remainder the
     // integer oracle finds.
@@ -396,7 +398,7 @@ TEST_CASE("m5 oracle: huge, infinite and NaN texture coordinates", "[m5][sample]
 
 // ---- TODO 3: mipmaps ----
 
-TEST_CASE("m5 oracle: every mipmap level is the plain average of the base block it covers", "[m5][mipmap]") {
+TEST_CASE("every mipmap level is the plain average of the base block it covers", "[m5][mipmap]") {
     for (auto [w, h] : {std::pair{1, 1}, std::pair{3, 5}, std::pair{5, 3}, std::pair{7, 1}, std::pair{1, 6}, std::pair{16, 16},
                         std::pair{13, 6}, std::pair{64, 1}, std::pair{37, 23}}) {
         ref::Texture t = texture_of(random_level(w, h, 1000 + w * 7 + h));
@@ -425,7 +427,7 @@ TEST_CASE("m5 oracle: every mipmap level is the plain average of the base block 
     }
 }
 
-TEST_CASE("m5 oracle: the 3x5 pyramid by hand (an odd column and row dropped)", "[m5][mipmap][extreme]") {
+TEST_CASE("the 3x5 pyramid by hand (an odd column and row dropped)", "[m5][mipmap][extreme]") {
     ref::Level base;
     base.width = 3;
     base.height = 5;
@@ -444,7 +446,7 @@ TEST_CASE("m5 oracle: the 3x5 pyramid by hand (an odd column and row dropped)", 
 
 // ---- TODO 4: level of detail and filtering ----
 
-TEST_CASE("m5 oracle: uv derivatives against finite differences of the exact perspective uv", "[m5][lod]") {
+TEST_CASE("uv derivatives against finite differences of the exact perspective uv", "[m5][lod]") {
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> pos(10, 300), wd(0.2, 20), uvd(-3, 3), bary(0.1, 0.8);
     int checked = 0;
@@ -488,7 +490,7 @@ TEST_CASE("m5 oracle: uv derivatives against finite differences of the exact per
     CHECK(checked > 200);
 }
 
-TEST_CASE("m5 oracle: uv derivatives against a GLM ray cast through the pixel", "[m5][lod]") {
+TEST_CASE("uv derivatives against a GLM ray cast through the pixel", "[m5][lod]") {
     // A floor triangle seen at a grazing angle, its screen positions from GLM's matrices.
     const int width = 320, height = 240;
     const View v = camera_view({0.5, 1.2, 5}, width, height);
@@ -525,7 +527,7 @@ TEST_CASE("m5 oracle: uv derivatives against a GLM ray cast through the pixel", 
     CHECK(checked > 100);
 }
 
-TEST_CASE("m5 oracle: level of detail by hand, and degenerate triangles", "[m5][lod][extreme]") {
+TEST_CASE("level of detail by hand, and degenerate triangles", "[m5][lod][extreme]") {
     // One texel per pixel across, two down: rho = 2, lambda = 1.
     CHECK(ref::level_of_detail({1.0 / 64, 0, 0, 2.0 / 32}, 64, 32) == Approx(1).epsilon(1e-12));
     // sqrt((64 * 3/64)^2 + (32 * 4/32)^2) = 5.
@@ -550,7 +552,7 @@ TEST_CASE("m5 oracle: level of detail by hand, and degenerate triangles", "[m5][
     CHECK(ref::level_of_detail(ref::uv_derivatives(s, {1, 2, 3}, {Vec2{0.3, 0.3}, Vec2{0.3, 0.3}, Vec2{0.3, 0.3}}, 3, 3), 8, 8) == -kInf);
 }
 
-TEST_CASE("m5 oracle: the filters against the block-average pyramid and tent sums", "[m5][filter]") {
+TEST_CASE("the filters against the block-average pyramid and tent sums", "[m5][filter]") {
     const ref::Level base = random_level(16, 8, 77);
     std::vector<ref::Level> pyramid;
     for (int k = 0; k < 5; ++k) pyramid.push_back(block_average_level(base, k));
@@ -594,7 +596,7 @@ TEST_CASE("m5 oracle: the filters against the block-average pyramid and tent sum
 
 // ---- TODO 6: Blinn-Phong ----
 
-TEST_CASE("m5 oracle: Blinn-Phong by hand", "[m5][phong]") {
+TEST_CASE("Blinn-Phong by hand", "[m5][phong]") {
     // N = (0, 0, 1), L = (0.6, 0, 0.8), V = (0, 0, 1), none given with length 1: c = 0.8,
     // H = (0.6, 0, 1.8) / sqrt(3.6), N.H = 3 / sqrt(10), to the 4th: 0.81.
     const Vec3 r = ref::blinn_phong({200, 100, 50}, {100, 100, 100}, 4, {0, 0, 5}, {0, 0, 0.1}, {3, 0, 4}, {1, 0.5, 2});
@@ -618,7 +620,7 @@ TEST_CASE("m5 oracle: Blinn-Phong by hand", "[m5][phong]") {
 
 // ---- TODO 7: tangent-space normal maps ----
 
-TEST_CASE("m5 oracle: the tangent frame solves its 2x2 system", "[m5][tangent]") {
+TEST_CASE("the tangent frame solves its 2x2 system", "[m5][tangent]") {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> c(-4, 4);
     for (int k = 0; k < 500; ++k) {
@@ -650,7 +652,7 @@ TEST_CASE("m5 oracle: the tangent frame solves its 2x2 system", "[m5][tangent]")
     }
 }
 
-TEST_CASE("m5 oracle: perturb_normal by hand", "[m5][tangent]") {
+TEST_CASE("perturb_normal by hand", "[m5][tangent]") {
     // n = z; T = (2, 0, 1) orthonormalizes to x; cross(n, x) = y, but B points down -y: B' = -y.
     ref::TangentFrame f;
     f.tangent = {2, 0, 1};
@@ -708,7 +710,7 @@ ref::ShadowMap make_map(const std::vector<const m4r::Mesh*>& meshes, Vec3 direct
 
 }  // namespace
 
-TEST_CASE("m5 oracle: the light's matrix against GLM", "[m5][shadow]") {
+TEST_CASE("the light's matrix against GLM", "[m5][shadow]") {
     ref::ShadowSettings s;
     s.center = {0.5, -1, 2};
     s.radius = 3;
@@ -731,7 +733,7 @@ TEST_CASE("m5 oracle: the light's matrix against GLM", "[m5][shadow]") {
     }
 }
 
-TEST_CASE("m5 oracle: the shadow factor against a ray cast to the light", "[m5][shadow]") {
+TEST_CASE("the shadow factor against a ray cast to the light", "[m5][shadow]") {
     const m4r::Mesh floor = floor_mesh(), blocker = blocker_mesh();
     ref::ShadowSettings s;
     s.resolution = 512;
@@ -792,7 +794,7 @@ TEST_CASE("m5 oracle: the shadow factor against a ray cast to the light", "[m5][
 
 // ---- TODO 5 and 9: the pipeline ----
 
-TEST_CASE("m5 oracle: the pipeline's texture coordinates against a GLM ray cast", "[m5][pipeline]") {
+TEST_CASE("the pipeline's texture coordinates against a GLM ray cast", "[m5][pipeline]") {
     // An unlit floor with an 8x8 texture (nearest, repeated twice across it): every pixel shows
     // the texel of the uv where its ray meets the floor, away from texel borders.
     const int width = 160, height = 120;
@@ -833,7 +835,7 @@ TEST_CASE("m5 oracle: the pipeline's texture coordinates against a GLM ray cast"
     CHECK(stats.specular_terms == 0);
 }
 
-TEST_CASE("m5 oracle: the pipeline's shadow against a ray cast per pixel", "[m5][pipeline][shadow]") {
+TEST_CASE("the pipeline's shadow against a ray cast per pixel", "[m5][pipeline][shadow]") {
     const int width = 160, height = 120;
     const View v = camera_view({0.4, 4.5, 4.5}, width, height);
     const m4r::Mesh floor = floor_mesh(), blocker = blocker_mesh();
@@ -877,7 +879,7 @@ TEST_CASE("m5 oracle: the pipeline's shadow against a ray cast per pixel", "[m5]
     CHECK(stats.specular_terms == 0);
 }
 
-TEST_CASE("m5 oracle: only what the scene needs, and a light behind everything", "[m5][pipeline]") {
+TEST_CASE("only what the scene needs, and a light behind everything", "[m5][pipeline]") {
     const int width = 96, height = 72;
     const View v = camera_view({0.4, 3, 4}, width, height);
     const m4r::Mesh floor = floor_mesh();
@@ -918,7 +920,7 @@ TEST_CASE("m5 oracle: only what the scene needs, and a light behind everything",
     CHECK(frame.color.at(width / 2, height / 2 + 10) == Color{200, 200, 200});
 }
 
-TEST_CASE("m5 oracle: a normal-mapped floor with a degenerate uv mapping keeps its normal", "[m5][pipeline][extreme]") {
+TEST_CASE("a normal-mapped floor with a degenerate uv mapping keeps its normal", "[m5][pipeline][extreme]") {
     const int width = 64, height = 48;
     const View v = camera_view({0, 3, 3}, width, height);
     m4r::Mesh floor = floor_mesh();
@@ -942,7 +944,7 @@ TEST_CASE("m5 oracle: a normal-mapped floor with a degenerate uv mapping keeps i
     }
 }
 
-TEST_CASE("m5 oracle: derivatives near u = 1e7 equal those of the same mapping near 0", "[m5][lod][extreme]") {
+TEST_CASE("derivatives near u = 1e7 equal those of the same mapping near 0", "[m5][lod][extreme]") {
     // Adding a whole number to every u changes no derivative: the mapping near 1e7 must give
     // the numbers of the mapping near 0 (within 1e-6), which it cannot if it loses the digits.
     const std::array<Vec3, 3> s = {Vec3{10, 20, 0}, Vec3{200, 40, 0}, Vec3{60, 180, 0}};
@@ -960,7 +962,7 @@ TEST_CASE("m5 oracle: derivatives near u = 1e7 equal those of the same mapping n
     }
 }
 
-TEST_CASE("m5 oracle: bad input to the pipeline neither crashes nor draws NaN", "[m5][pipeline][extreme]") {
+TEST_CASE("bad input to the pipeline neither crashes nor draws NaN", "[m5][pipeline][extreme]") {
     const int width = 64, height = 48;
     const View v = camera_view({0.3, 3, 3}, width, height);
     m4r::Mesh nan_uv = floor_mesh(), huge_uv = floor_mesh(), zero_normals = floor_mesh();
