@@ -9,6 +9,7 @@
 #include "m2/scenes.h"
 #include "m3/scenes.h"
 #include "m4/scenes.h"
+#include "m5/scenes.h"
 
 namespace {
 template <typename Scene>
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
     if (m == "m2") return print(m2cp::scenes());
     if (m == "m3") return print(m3cp::scenes());
     if (m == "m4") return print(m4cp::scenes());
-    std::cerr << "usage: checkpoint_ids m1|m2|m3|m4\n";
+    if (m == "m5") return print(m5cp::scenes());
+    std::cerr << "usage: checkpoint_ids m1|m2|m3|m4|m5\n";
     return 2;
 }

@@ -41,6 +41,9 @@
 #include "m4/tables.h"
 #include "m4/scenes.h"
 #include "m4/functions.h"
+#include "m5/functions.h"
+#include "m5/render.h"
+#include "m5/scenes.h"
 #include "m1/functions.h"
 #include "m2/functions.h"
 #include "m3/functions.h"
@@ -66,6 +69,7 @@ std::vector<Entry> all_scenes() {
     for (const m2cp::Scene& s : m2cp::scenes()) out.push_back({"m2", s.id, s.title, s.demo, m2cp::reference::render});
     for (const m3cp::Scene& s : m3cp::scenes()) out.push_back({"m3", s.id, s.title, s.demo, m3cp::reference::render});
     for (const m4cp::Scene& s : m4cp::scenes()) out.push_back({"m4", s.id, s.title, s.demo, m4cp::reference::render});
+    for (const m5cp::Scene& s : m5cp::scenes()) out.push_back({"m5", s.id, s.title, s.demo, m5cp::reference::render});
     return out;
 }
 
@@ -222,6 +226,7 @@ std::string todo_table_text(const std::string& milestone) {
     if (milestone == "m2") suite.functions = m2cp::functions();
     if (milestone == "m3") suite.functions = m3cp::functions();
     if (milestone == "m4") suite.functions = m4cp::functions();
+    if (milestone == "m5") suite.functions = m5cp::functions();
     if (suite.functions.empty()) throw std::runtime_error("no milestone named " + milestone);
     std::ifstream rubric_file(RASTER_RUBRIC);
     if (!rubric_file) throw std::runtime_error(std::string("cannot read the rubric ") + RASTER_RUBRIC);
@@ -296,6 +301,6 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table|m1-table|m3-table|m4-table [--update|--check FILE]\n"
-                 "       reference_tool todo-table m1|m2|m3|m4 [--update|--check FILE]\n";
+                 "       reference_tool todo-table m1|m2|m3|m4|m5 [--update|--check FILE]\n";
     return 2;
 }

@@ -50,7 +50,6 @@ bool close(double a, double b, double tol) {
 Vec3 vec3(const Values& v, const std::string& key) { return {get(v, key + ".x"), get(v, key + ".y"), get(v, key + ".z")}; }
 std::string str(Vec3 p) { return "(" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) + ")"; }
 std::string str(Vec2 p) { return "(" + num(p.x) + ", " + num(p.y) + ")"; }
-std::string str(Color c) { return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")"; }
 bool same3(Vec3 a, Vec3 b, double tol) { return close(a.x, b.x, tol) && close(a.y, b.y, tol) && close(a.z, b.z, tol); }
 Vec3 mul(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 
@@ -276,7 +275,7 @@ Frame t_frame(const FrameCase& c) {
 // making them orthonormal (each only normalized).
 Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
     const Vec3 n = c.n;
-    if (!c.valid || !raster::is_finite(n) || !raster::is_finite(c.texel) || !raster::is_finite(c.tangent) ||
+    if (!c.valid || n == Vec3{} || !raster::is_finite(n) || !raster::is_finite(c.texel) || !raster::is_finite(c.tangent) ||
         !raster::is_finite(c.bitangent)) {
         return n;
     }
