@@ -7,7 +7,7 @@
 // It draws a bumpy, shiny cube standing on a checkerboard floor that recedes to the horizon,
 // lit by the sun, which casts shadows, in four versions: trilinear, nearest, without the
 // shadow and with the bias set to zero. Try: a shadow map of 64 or 4096 texels, pcf off, the
-// sun low (direction (-1, -0.05, -0.3)) or below the floor, the floor's uv times 1e7, a wrap
+// sun low (direction (-1, -0.05, -0.3)) or below the floor, the floor's uv moved by 1e7, a wrap
 // of kClampToEdge or kMirroredRepeat, shininess 4 or 400, the normal map's texels read as
 // [0, 1], a 1 x 1 texture.
 #include <cmath>
