@@ -224,7 +224,8 @@ TangentFrame tangent_frame(Vec3 p0, Vec3 p1, Vec3 p2, Vec2 uv0, Vec2 uv1, Vec2 u
 // The normal-mapped normal for the unit surface normal n and a normal-map texel (levels):
 // T' = normalize(T - n dot(n, T)); B' = cross(n, T'), negated when dot(B', B) < 0; the result
 // normalize(x T' + y B' + z n) for (x, y, z) = 2 texel / 255 - 1. Returns n unchanged when the
-// frame is not valid, when T' or the result is zero, or when anything is not finite.
+// frame is not valid, when n, T' or the result is zero, or when anything is not finite (a zero
+// normal lights nothing, as in milestone 4, normal map or not).
 Vec3 perturb_normal(const TangentFrame& frame, Vec3 n, Vec3 texel);
 
 // ---- TODO 8: shadow mapping ----
