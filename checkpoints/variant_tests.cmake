@@ -45,7 +45,7 @@ if(RASTER_HANDOUT)  # a student's handout has no reference source, bugs or corre
 endif()
 
 set(RASTER_VARIANT_SEEDS 1 2 3 CACHE STRING "Scene seeds the project's variant tests run")
-set(raster_variant_milestones m1 m2 m3 m4)
+set(raster_variant_milestones m1 m2 m3 m4 m5)
 
 foreach(m ${raster_variant_milestones})
   file(GLOB variant_files CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${m}/variants/*.variant)

@@ -108,6 +108,7 @@ struct Limited {
     std::string what;
     int shown = 0, more = 0;
     void add(const std::string& topic, const std::string& msg) {
+        if (shown == 0) topic_of_rest = topic;
         if (shown < 4) {
             c.add(topic, msg);
             ++shown;
@@ -657,7 +658,7 @@ void judge_filter(Ctx& c) {
     }
     const Vec3 null_sample = vec3(v, "filter.null");
     const auto pyr = t_pyramid(bases[0]);
-    if (!same3(null_sample, t_sample(pyr, {0.3, 0.7}, 1.5, Filter::kTrilinear, Wrap::kRepeat, Wrap::kRepeat), 1e-9)) {
+    if (out.shown == 0 && !same3(null_sample, t_sample(pyr, {0.3, 0.7}, 1.5, Filter::kTrilinear, Wrap::kRepeat, Wrap::kRepeat), 1e-9)) {
         c.add("filter", "TODO 4: sample() with mipmap_builds == nullptr (uv (0.3, 0.7), lambda 1.5, kTrilinear) gave " +
                             str(null_sample) + ": it must still build and sample, only not count");
     }
@@ -760,8 +761,15 @@ void judge_shadow(Ctx& c) {
                                        ", radius " + num(k.radius) + ")";
             std::string why;
             const Vec3 d = unit_or_zero(k.direction);
+            bool zero = true;
+            for (int r = 0; r < 4; ++r) {
+                for (int col = 0; col < 4; ++col) zero &= mine.m[r][col] == 0;
+            }
             if (d == Vec3{} || !raster::is_finite(k.direction)) {
                 why = " is not the zero matrix: a zero or non-finite direction gives the zero matrix";
+            } else if (zero) {
+                why = " is the zero matrix, expected orthographic(-r, r, -r, r, r, 3r) * look_at(center - 2r * "
+                      "normalize(direction), center, up)";
             } else if (flip) {
                 why = " looks AGAINST the light: the eye is center - 2r * normalize(direction), so the light looks along "
                       "the direction its rays travel";
@@ -791,7 +799,11 @@ void judge_shadow(Ctx& c) {
         const double mine = get(v, "shadow" + std::to_string(i)), want = t_shadow(map, k);
         if (close(mine, want, 1e-9)) continue;
         std::string why, topic = k.pcf ? "pcf" : "shadow";
-        if (close(mine, t_shadow(map, k, true), 1e-9) && !k.pcf) {
+        // The comparison reversed: the plain lit and shadowed cases (0 and 1) both come out the other way.
+        const bool reversed = close(get(v, "shadow0"), t_shadow(map, cases[0], true), 1e-9) &&
+                              close(get(v, "shadow1"), t_shadow(map, cases[1], true), 1e-9) &&
+                              !close(get(v, "shadow0"), t_shadow(map, cases[0]), 1e-9);
+        if (reversed && !k.pcf) {
             why = ": the comparison is reversed: a point is in shadow when it is FARTHER from the light than the stored "
                   "depth, d - bias / (2r) > stored";
         } else if (i == 2) {
@@ -1159,8 +1171,9 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
                     "resolution^2 float-Z frame with light_view_projection; fill_triangle multiplies each light's term "
                     "by shadow_factor at the interpolated world position"}},
         {"m5.shadow_acne",
-         {"shadow bias", "TODOs 5 and 9: fill_triangle passes the normalized normal and the world position to "
-                         "shadow_factor, which applies the settings' biases"}},
+         {"shadow", "TODOs 5 and 9: fill_triangle passes the normalized normal and the world position to "
+                    "shadow_factor, which applies the settings' biases; draw_scene's depth pass uses "
+                    "light_view_projection"}},
         {"m5.pcf", {"pcf", "TODOs 5 and 9: fill_triangle passes the settings (pcf on or off) to shadow_factor"}},
         {"m5.light_behind",
          {"light behind", "TODO 5: where dot(N, L) <= 0 a light adds nothing: no blinn_phong, no shadow lookup"}},
@@ -1172,24 +1185,6 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
     };
     const auto it = themes.find(id);
     return it == themes.end() ? std::pair<std::string, std::string>{"pipeline", "TODO 9: follow draw_scene's steps"} : it->second;
-}
-
-// fill_triangle (TODO 5) on m5.fill_triangle's own triangles, drawn by the render half of a
-// scene that calls it through draw_scene (render.cpp, kFillKey): a finding when its picture
-// differs from the reference's beyond the tolerance.
-std::optional<cp::Finding> fill_triangle_fails(const cp::Artifacts& art, const cp::Artifacts& ref) {
-    const std::string image = kFillKey.substr(0, kFillKey.size() - 1);
-    const auto mine_it = art.images.find(image), ref_it = ref.images.find(image);
-    if (ref_it == ref.images.end()) return std::nullopt;
-    if (mine_it == art.images.end() || mine_it->second.width() != ref_it->second.width() ||
-        mine_it->second.height() != ref_it->second.height() ||
-        cp::exceeds_tolerance(mine_it->second, ref_it->second, tolerance_for(ref_it->second))) {
-        return cp::Finding{"rasterizer",
-                           "fill_triangle draws m5.fill_triangle's two textured triangles differently from the reference "
-                           "(beyond the tolerance)",
-                           "", "TODO 5"};
-    }
-    return std::nullopt;
 }
 
 // The ready-made triangle 0 (kNearest) of m5.fill_triangle: at pixels well inside it where the
@@ -1238,6 +1233,35 @@ void judge_screen_uv(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref
                                     " pixels inside the first triangle your texels are those of the SCREEN-space uv: weigh "
                                     "each vertex's uv by l_i / w_i and normalize (m4::perspective_weights)");
     }
+}
+
+// fill_triangle (TODO 5) on m5.fill_triangle's own triangles, drawn by the render half of a
+// scene that calls it through draw_scene (render.cpp, kFillKey): a finding when its picture
+// differs from the reference's beyond the tolerance, naming screen-space uv when it sees them.
+std::optional<cp::Finding> fill_triangle_fails(const cp::Artifacts& art, const cp::Artifacts& ref) {
+    const std::string image = kFillKey.substr(0, kFillKey.size() - 1);
+    const auto mine_it = art.images.find(image), ref_it = ref.images.find(image);
+    if (ref_it == ref.images.end()) return std::nullopt;
+    if (mine_it != art.images.end() && mine_it->second.width() == ref_it->second.width() &&
+        mine_it->second.height() == ref_it->second.height() &&
+        !cp::exceeds_tolerance(mine_it->second, ref_it->second, tolerance_for(ref_it->second))) {
+        return std::nullopt;
+    }
+    if (mine_it != art.images.end() && mine_it->second.width() == ref_it->second.width() &&
+        mine_it->second.height() == ref_it->second.height()) {
+        const Scene& fill = scene(kFillScene);
+        cp::Artifacts ref_fill;
+        ref_fill.images["main"] = ref_it->second;
+        const Values none;
+        cp::Judgement scratch;
+        Ctx sub{fill, none, none, scratch};
+        if (!fill.panels.empty()) judge_screen_uv(sub, mine_it->second, ref_fill, fill.panels[0]);
+        if (!scratch.findings.empty()) return scratch.findings.front();
+    }
+    return cp::Finding{"rasterizer",
+                       "fill_triangle draws m5.fill_triangle's two textured triangles differently from the reference "
+                       "(beyond the tolerance)",
+                       "", "TODO 5"};
 }
 
 void judge_filter_chart(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref) {
@@ -1306,6 +1330,18 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
     const bool sized = mine && mine->width() == s.width && mine->height() == s.height;
     const auto [theme_topic, theme_advice] = picture_theme(s.id);
     const auto ref_main = ref.images.find("main");
+    const bool differs = sized && !expected.empty() && cp::exceeds_tolerance(*mine, expected, tolerance_for(expected));
+    // judge() checked every function this picture is drawn with, and they pass. When the picture
+    // differs and fill_triangle (TODO 5) draws m5.fill_triangle's own triangles wrong too, that is
+    // the caller to fix, whatever the scene is about: every other finding would follow from it.
+    const bool pipeline = std::any_of(s.panels.begin(), s.panels.end(), [](const Panel& p) { return p.screen_tris.empty(); });
+    if (differs && pipeline) {
+        if (const std::optional<cp::Finding> fill = fill_triangle_fails(art, ref)) {
+            c.j.findings.push_back(cp::fix_first(*fill, kFillScene, "this picture is drawn with it",
+                                                 "this picture cannot come out right before that checkpoint passes"));
+            return;
+        }
+    }
 
     std::map<std::string, std::pair<double, double>> totals;
     for (std::size_t p = 0; p < s.panels.size(); ++p) {
@@ -1325,13 +1361,17 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 ++one_texel;
             }
         }
+        // The per-fragment counts follow the fragments shaded: when those are off, only they are told.
+        bool fragments_off = false;
         for (const StatInfo& st : kStats) {
             const std::string k = key + ".stats." + st.name;
             const double a = get(c.mine, k), b = get(c.ref, k);
             totals[st.name].first += a;
             totals[st.name].second += b;
+            const std::string name = st.name;
+            const bool per_fragment = !st.exact && name != "fragments" && name != "shaded";
             bool ok;
-            if (std::string(st.name) == "mipmap_builds" && one_texel > 0) {
+            if (name == "mipmap_builds" && one_texel > 0) {
                 ok = std::abs(a - b) <= one_texel;
             } else if (b == 0 || a == 0) {
                 ok = a == b;
@@ -1340,21 +1380,38 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             } else {
                 ok = std::abs(a - b) <= 0.02 * b + 4;  // per-pixel counts: rounding at edges
             }
+            // A normal map may or may not be read where its triangle has no tangent frame (the
+            // texel is not used there): fewer reads than the reference's are fine in the scenes
+            // that have such triangles.
+            if (!ok && name == "normal_map_samples" && a > 0 && a < b &&
+                (s.id == "m5.degenerate_uv" || s.id == "m5.extreme_input")) {
+                ok = true;
+            }
             if (ok) continue;
-            std::string why;
-            const std::string name = st.name;
+            if (name == "fragments" || name == "shaded") fragments_off = true;
+            if (per_fragment && fragments_off) continue;
+            std::string why, topic = st.topic;
+            const bool work = name != "fragments" && name != "shaded" && name != "triangles_drawn";
             if (b == 0) {
+                topic = "needs";
                 why = " [needs]: this scene does not need that stage, so it must not run";
+            } else if (work && a > b) {
+                topic = "needs";
+                why = ": more than this scene needs";
+                if (name == "lod_computed") why += " (the level of detail is computed for mip filters only)";
+                if (name == "mipmap_builds") why += " (one pyramid per texture, built the first time a mip filter needs a level above 0)";
+                if (name == "shadow_passes" || name == "shadow_texels") why += " (a depth pass only for a light that casts shadows)";
+                if (name == "shadow_lookups" || name == "specular_terms") why += " (none where dot(N, L) <= 0)";
             } else if (name == "shaded" && a > b) {
                 why = ": a fragment whose key is greater than the stored key is dropped before anything else (not "
                       "shaded)";
             } else if (name == "mipmap_builds") {
-                why = ": one pyramid per texture, built the first time a mip filter meets a fragment with lambda > 0";
+                why = ": one pyramid per texture, built the first time a mip filter needs a level above 0";
             } else if (name == "shadow_texels") {
                 why = ": each shadow pass allocates resolution^2 keys";
             }
-            c.add(b == 0 ? "needs" : st.topic, std::string(st.todo) + ": " + num(a) + " " + st.what + where + ", expected " +
-                                                   (st.exact ? num(b) : "about " + num(b)) + why);
+            c.add(topic, std::string(st.todo) + ": " + num(a) + " " + st.what + where + ", expected " +
+                             (st.exact || b == 0 ? num(b) : "about " + num(b)) + why);
         }
         if (!sized) continue;
         if (!panel.screen_tris.empty()) judge_screen_uv(c, *mine, ref, panel);
@@ -1380,7 +1437,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             const double allowed = double(ref_wrong) * 1.3 + 10 + 0.01 * double(counted);
             if (double(wrong) > allowed) {
                 const double acne = counted ? 100.0 * double(wrong) / double(counted) : 0;
-                c.add(theme_topic == "pcf" ? "shadow" : theme_topic,
+                c.add("shadow",
                       theme_advice.substr(0, theme_advice.find(": ")) + ": " + std::to_string(wrong) + " of " +
                           std::to_string(counted) + " pixels" + where +
                           " are in the wrong light state against a ray cast to the light (reference " +
@@ -1431,15 +1488,9 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                "): " + why);
     }
 
-    if (sized && !expected.empty() && cp::exceeds_tolerance(*mine, expected, tolerance_for(expected))) {
-        // judge() checked every function this picture is drawn with, and they pass: the
-        // difference comes from their callers, fill_triangle (TODO 5) or draw_scene (TODO 9).
-        const bool pipeline = std::any_of(s.panels.begin(), s.panels.end(), [](const Panel& p) { return p.screen_tris.empty(); });
-        const std::optional<cp::Finding> fill = pipeline ? fill_triangle_fails(art, ref) : std::nullopt;
-        if (fill) {
-            c.j.findings.push_back(cp::fix_first(*fill, kFillScene, "this picture is drawn with it",
-                                                 "this picture cannot come out right before that checkpoint passes"));
-        } else {
+    if (differs) {
+        // The difference comes from the callers, fill_triangle (TODO 5) or draw_scene (TODO 9).
+        {
             std::vector<std::string> passing;
             for (Group g : prerequisite_groups(s)) {
                 const std::string id = prerequisite_checkpoint(g);
@@ -1490,7 +1541,9 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
     // own checkpoints' inputs. One that is wrong is the finding ("fix TODO 3 first, see
     // m5.mipmaps"), and the picture's own findings, which would blame fill_triangle or
     // draw_scene for what it did, are left out. A checkpoint that passes stays passed.
+    // A group whose own prerequisite fails is not told (sample() is wrong when fetch is).
     std::vector<cp::Finding> first;
+    std::set<Group> failed;
     for (Group g : fails ? prerequisite_groups(s) : std::vector<Group>{}) {
         const std::string prefix = prerequisite_key(g);
         const Values mine = cp::values_under(artifacts.values, prefix), ref = cp::values_under(reference.values, prefix);
@@ -1498,6 +1551,9 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
         Ctx sub{s, mine, ref, scratch};
         judge_group(g, sub);
         if (scratch.findings.empty()) continue;
+        failed.insert(g);
+        const auto deps = group_dependencies(g);
+        if (std::any_of(deps.begin(), deps.end(), [&failed](Group d) { return failed.count(d) > 0; })) continue;
         first.push_back(cp::fix_first(scratch.findings.front(), prerequisite_checkpoint(g), "this picture is drawn with it",
                                       "this picture cannot come out right before that checkpoint passes"));
     }

@@ -244,9 +244,13 @@ Mesh facing_quad(double s, double z, Vec2 uv0, Vec2 uv1) {
     return m;
 }
 
-// The shadow scenes' floor and box (standing on the floor, turned about y).
+// The shadow scenes' floor and box (standing on the floor, turned about y). The floor lies
+// inside the view volume of the shadow scenes' cameras: a clipped polygon's fan is free, and
+// another fan moves each fragment's world position by up to a 32nd of a pixel, which may move a
+// lookup near a texel boundary into the next texel (a step of a ninth with PCF, which the
+// picture's tolerance would not absorb).
 std::vector<Item> floor_and_box(Vec3 box_at, double box_half, double turn) {
-    Item floor = item(floor_quad(0, 3, 3, -3, {1, 1}), plain(kFloor));
+    Item floor = item(floor_quad(0, 2.2, 2.2, -2.2, {1, 1}), plain(kFloor));
     Item box = item(box_mesh(), plain(kBoxColor));
     box.position = box_at;
     box.size = {box_half, box_half, box_half};
@@ -311,7 +315,7 @@ std::vector<Scene> build() {
         // Clockwise, in front of the first along part of it, minified: trilinear.
         pn.screen_tris.push_back({{Vec3{20.6, 84.3, 0.5}, Vec3{112.7, 80.1, -0.3}, Vec3{80.1, 6.4, 0.4}},
                                   {1.5, 1, 6},
-                                  {Vec2{0, 0}, Vec2{6, 0}, Vec2{3, 6}},
+                                  {Vec2{0, 0}, Vec2{2, 0}, Vec2{1, 2}},
                                   unlit(1, Filter::kTrilinear)});
         s.panels.push_back(pn);
         add(s);
@@ -430,8 +434,18 @@ std::vector<Scene> build() {
             TextureSpec t = tex(Pattern::kChecker, 16, 16, 4);
             t.a = {240, 120, 60};
             t.b = {30, 90, 200};
-            Panel pn = panel(cam({0.03, 0.15, 4}, {0.01, 0.02, -10}, 0.05, 300),
-                             {item(floor_quad(0, 20, 3, -200, {40, 400}), unlit(0, filters[p]))}, {t}, 128 * p, 0, 128, 64);
+            // A trapezoid that lies inside the view volume (nothing is clipped: the fan of a clipped
+            // polygon is free, and each fan triangle's lambda comes from its own snapped corners),
+            // its uv the world x and z over 2, so both triangles share one affine map.
+            Mesh floor;
+            floor.positions = {{-0.8, 0, 3}, {0.8, 0, 3}, {150, 0, -200}, {-150, 0, -200}};
+            floor.triangles = {{0, 1, 2}, {0, 2, 3}};
+            for (const Vec3& q : floor.positions) {
+                floor.uvs.push_back({q.x / 2, q.z / 2});
+                floor.normals.push_back({0, 1, 0});
+            }
+            Panel pn = panel(cam({0.03, 0.15, 4}, {0.01, 0.02, -10}, 0.05, 300), {item(floor, unlit(0, filters[p]))}, {t},
+                             128 * p, 0, 128, 64);
             s.panels.push_back(pn);
         }
         add(s);
@@ -548,10 +562,14 @@ std::vector<Scene> build() {
         for (int p = 0; p < 2; ++p) {
             Panel pn = panel(cam({0.3, 3.2, 5.5}, {0.01, 0.2, 0.02}, 0.5, 50), floor_and_box({0.1, 0.7, 0}, 0.7, 0.6), {},
                              128 * p, 0, 128, 96);
-            pn.lights = {sun({-0.6, -1, -0.5}, {0.85, 0.85, 0.85}, true)};
+            pn.lights = {sun({-0.7, -1, 0.45}, {0.85, 0.85, 0.85}, true)};  // the shadow falls toward the camera
             pn.shadows.resolution = 128;
             pn.shadows.center = {0, 0.5, 0};
             pn.shadows.radius = 3.6;
+            // PCF compares the point's depth with texels up to 1.5 texels away, so on a surface
+            // sloped against the light it needs more bias than one texel's lookup: 0.06 + 0.1 tan.
+            pn.shadows.constant_bias = 0.06;
+            pn.shadows.slope_bias = 0.1;
             pn.shadows.pcf = p == 1;
             s.panels.push_back(pn);
         }
@@ -601,15 +619,16 @@ std::vector<Scene> build() {
             }
             if (p == 3) {
                 // Two floors share one texture (one pyramid); one light casts shadows, one does not.
-                pn.camera = cam({0.03, 1.2, 3.2}, {0.01, -0.5, -2});
+                // Inside the view volume: nothing is clipped.
+                pn.camera = cam({0.03, 1.6, 5.5}, {0.01, -0.5, -2});
                 pn.textures = {tex(Pattern::kFine, 64, 64)};
                 MaterialSpec m = plain(kFloor);
                 m.texture = 0;
                 m.filter = Filter::kTrilinear;
-                Item a = item(floor_quad(-1, 1.2, 1.5, -8, {4, 24}), m);
-                a.position = {-1.3, 0, 0};
+                Item a = item(floor_quad(-1, 0.9, 1, -8, {4, 24}), m);
+                a.position = {-1.1, 0, 0};
                 Item b = a;
-                b.position = {1.3, 0, 0};
+                b.position = {1.1, 0, 0};
                 pn.items = {a, b};
                 pn.lights = {sun({-0.6, -0.7, -1}, {0.5, 0.5, 0.5}, true), sun({0.6, -0.7, -0.3}, {0.3, 0.3, 0.3})};
                 pn.shadows.resolution = 256;
@@ -633,12 +652,13 @@ std::vector<Scene> build() {
                        {-1.5, 0.5, 0},  {-0.2, 0.4, 0}, {-0.9, 1.6, 0},             // infinite uv
                        {0.1, 0.5, 0},   {1.5, 0.4, 0},  {0.8, 1.5, 0},              // 1e300 uv
                        {-1.4, 1.7, 0},  {1.5, 1.72, 0}, {1.5, 1.7200001, 0},        // a needle
-                       {kNaN, 0, 0},    {0.5, 0.5, 0},  {1e30, -1e30, 0.2},         // non-finite and huge
-                       {0.2, -0.1, 0.5}, {1.8, 1.6, -3}, {-1.6, 0.9, 5}};           // one behind the eye
-        m.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 0}, {17, 16, 1}, {18, 19, 20}, {0, 1, 99}};
+                       {kNaN, 0, 0},    {0.5, 0.5, 0},  {1e30, -1e30, -1},          // non-finite; huge (1 behind the rest)
+                       {0.2, -0.1, 0.5}, {1.8, 1.6, 0.4}, {-1.6, 0.9, 5},           // one behind the eye
+                       {0.5, 0.5, -1},  {0.2, -1.4, -1}};
+        m.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 0}, {17, 21, 22}, {18, 19, 20}, {0, 1, 99}};
         m.uvs = {{0, 0},    {2, 0},  {1, 2},  {kNaN, 0},    {1, 1},        {0, kNaN},   {kInf, 0},  {1, -kInf}, {0, 0},
                  {1e300, 0}, {1e300 + 1e285, 3}, {-1e300, 1e300}, {0, 0}, {5, 0}, {5, 1e-7}, {0, 0},     {0.5, 0.5}, {1e30, -1e30},
-                 {0, 0},    {1, 0},  {0, 1}};
+                 {0, 0},    {1, 0},  {0, 1},  {0.5, 0.5}, {0.2, -1.4}};
         m.normals.assign(m.positions.size(), Vec3{0, 0, 1});
         MaterialSpec mat = plain({200, 200, 200}, {100, 100, 100}, 16);
         mat.texture = 0;
@@ -648,9 +668,14 @@ std::vector<Scene> build() {
                          0, 0, 96, 96);
         p0.lights = {sun({-0.3, -0.4, -1}, {0.8, 0.8, 0.8}, true)};
         p0.shadows.resolution = 128;
+        p0.shadows.pcf = false;  // a hard shadow edge: the clipped triangle's fan is free (see floor_and_box)
         s.panels.push_back(p0);
-        // Near 1e-6 and far 1e6: a floor and a box seen from just above the floor.
-        Panel p1 = panel(cam({0.03, 0.4, 3}, {0.01, 0.1, -2}, 1e-6, 1e6), floor_and_box({0.2, 0.5, -0.5}, 0.5, 0.3),
+        // Near 1e-6 and far 1e6: a floor and a box floating above it, seen from just above the
+        // floor. Float-Z keys there resolve only about half a unit at distance 3, so the box is
+        // well apart from the floor behind it (surfaces closer than that would z-fight, and the
+        // winner would depend on rounding that a correct triangulation of the clipped floor may
+        // change).
+        Panel p1 = panel(cam({0.03, 0.4, 3}, {0.01, 0.1, -2}, 1e-6, 1e6), floor_and_box({0.2, 1.6, -0.5}, 0.4, 0.3),
                          {tex(Pattern::kChecker, 16, 16, 4)}, 96, 0, 96, 96);
         p1.items[0].mesh = floor_quad(0, 1e5, 1e5, -1e5, {1e5, 1e5});
         p1.items[0].material.texture = 0;
@@ -658,6 +683,7 @@ std::vector<Scene> build() {
         p1.lights = {sun({-0.5, -1, -0.35}, {0.85, 0.85, 0.85}, true)};
         p1.shadows.resolution = 256;
         p1.shadows.radius = 3;
+        p1.shadows.pcf = false;
         s.panels.push_back(p1);
         add(s);
     }
@@ -678,7 +704,7 @@ std::vector<Scene> build() {
         textures[3].b = {230, 200, 0};
         MaterialSpec floor_m = plain(kFloor);
         floor_m.texture = 0;
-        Item floor = item(floor_quad(0, 3, 3, -3, {3, 3}), floor_m);
+        Item floor = item(floor_quad(0, 2.2, 2.2, -2.2, {2.2, 2.2}), floor_m);  // inside the view volume
         MaterialSpec box_m = plain(kBoxColor, {60, 60, 60}, 16);
         box_m.texture = 1;
         box_m.normal_map = 2;
@@ -1093,24 +1119,34 @@ std::vector<ShadowCase> shadow_cases() {
     return cases;
 }
 
+std::vector<Group> group_dependencies(Group g) {
+    switch (g) {
+        case Group::kSampling: return {Group::kWrap};
+        case Group::kFilter: return {Group::kWrap, Group::kSampling, Group::kMipmaps};
+        default: return {};
+    }
+}
+
 std::vector<Group> prerequisite_groups(const Scene& s) {
     std::vector<Group> need;
     auto add = [&need](Group g) {
         if (std::find(need.begin(), need.end(), g) == need.end()) need.push_back(g);
+        for (Group d : group_dependencies(g)) {
+            if (std::find(need.begin(), need.end(), d) == need.end()) need.push_back(d);
+        }
     };
     auto material = [&](const MaterialSpec& m) {
         if (m.texture >= 0) {
-            add(Group::kWrap);
-            add(Group::kSampling);
-            add(Group::kFilter);
-            if (m.filter == Filter::kNearestMip || m.filter == Filter::kTrilinear) {
-                add(Group::kMipmaps);
-                add(Group::kLod);
-            }
+            add(Group::kFilter);  // sample(), and through it the samplers (and the pyramid)
+            if (m.filter == Filter::kNearestMip || m.filter == Filter::kTrilinear) add(Group::kLod);
         }
         if (m.lit) add(Group::kBlinnPhong);
-        if (m.lit && m.normal_map >= 0) add(Group::kTangent);
+        if (m.lit && m.normal_map >= 0) {
+            add(Group::kSampling);  // the normal map is read with sample_bilinear
+            add(Group::kTangent);
+        }
     };
+    for (Group g : s.groups) add(g);
     for (const Panel& p : s.panels) {
         for (const Item& it : p.items) material(it.material);
         for (const ScreenTri& t : p.screen_tris) material(t.material);

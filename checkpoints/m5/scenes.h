@@ -150,6 +150,9 @@ const Scene& scene(const std::string& id);
 // panels call through fill_triangle and draw_scene), besides its own. The render half records
 // them under "pre<group>."; the judge checks them when the picture fails, and a failure says
 // "fix TODO N first (see <prerequisite_checkpoint>)".
+// Number groups of other scenes that a group's functions call (sample_bilinear calls fetch,
+// sample() the samplers and build_mipmaps): a numbers scene lists them as its prerequisites too.
+std::vector<Group> group_dependencies(Group g);
 std::vector<Group> prerequisite_groups(const Scene& s);
 std::string prerequisite_key(Group g);         // "pre3."
 std::string prerequisite_checkpoint(Group g);  // the public numbers scene that judges g
