@@ -224,7 +224,8 @@ TangentFrame tangent_frame(Vec3 p0, Vec3 p1, Vec3 p2, Vec2 uv0, Vec2 uv1, Vec2 u
 // The normal-mapped normal for the unit surface normal n and a normal-map texel (levels):
 // T' = normalize(T - n dot(n, T)); B' = cross(n, T'), negated when dot(B', B) < 0; the result
 // normalize(x T' + y B' + z n) for (x, y, z) = 2 texel / 255 - 1. Returns n unchanged when the
-// frame is not valid, when T' or the result is zero, or when anything is not finite.
+// frame is not valid, when n, T' or the result is zero, or when anything is not finite (a zero
+// normal lights nothing, as in milestone 4, normal map or not).
 Vec3 perturb_normal(const TangentFrame& frame, Vec3 n, Vec3 texel);
 
 // ---- TODO 8: shadow mapping ----
@@ -316,11 +317,11 @@ struct FillState {
 // TODO 5: one triangle (both windings, milestone 2's snapping and fill rule) into the frame,
 // which always has a float-Z depth buffer. Per covered pixel center: the screen weights l, the
 // key m4::depth_key(kFloatZ, z_ndc, w) of the screen-interpolated z_ndc; a fragment whose key is
-// greater than the stored key is dropped before anything else (not shaded); else the
+// kClearKey or greater than the stored key is dropped before anything else (not shaded); else the
 // perspective-correct weights (m4::perspective_weights) interpolate uv, normal and world
 // position; the base color is the material's color or sample() of its texture (with lambda from
-// uv_derivatives at the pixel center and level_of_detail on level 0's size, for mip filters
-// only); unlit materials stop there; lit ones normalize the normal, perturb it by the normal map
+// uv_derivatives at the pixel center, from the SNAPPED vertex positions the screen weights come
+// from, and level_of_detail on level 0's size, for mip filters only); unlit materials stop there; lit ones normalize the normal, perturb it by the normal map
 // if any, and add ambient and each light (blinn_phong, times shadow_factor for a light with a
 // map, skipped where dot(N, L) <= 0); then m4::to_color and the depth test m4::depth_passes
 // decide the write. Counts into stats.
