@@ -138,6 +138,8 @@ void App::set_model(Model model, const std::string& error) {
     model_ = std::move(model);
     model_error_ = error;
     for (auto& p : prepared_) p.reset();
+    scene_assets_.reset();
+    for (auto& p : prepared_scene_) p.reset();
 }
 
 void App::set_mode(Mode mode) {
@@ -145,9 +147,12 @@ void App::set_mode(Mode mode) {
     plan_ = make_plan(mode, stages_, student_, reference_);
 }
 
-void App::move_light(double azimuth, double elevation) {
-    light_azimuth_ = std::remainder(light_azimuth_ + azimuth, 2 * std::numbers::pi);
-    light_elevation_ = std::clamp(light_elevation_ + elevation, -1.5, 1.5);
+void App::move_light(double azimuth, double elevation) { set_light(light_azimuth_ + azimuth, light_elevation_ + elevation); }
+
+void App::set_light(double azimuth, double elevation) {
+    if (!std::isfinite(azimuth) || !std::isfinite(elevation)) return;
+    light_azimuth_ = std::remainder(azimuth, 2 * std::numbers::pi);
+    light_elevation_ = std::clamp(elevation, -1.5, 1.5);
     // The light sits in the direction (azimuth, elevation) from the model; its rays travel back.
     const double c = std::cos(light_elevation_);
     light_.direction = {-c * std::sin(light_azimuth_), -std::sin(light_elevation_), -c * std::cos(light_azimuth_)};
@@ -155,6 +160,24 @@ void App::move_light(double azimuth, double elevation) {
 
 void App::advance(double seconds) {
     if (spin_) model_yaw_ = std::remainder(model_yaw_ + kSpinPerSecond * seconds, 2 * std::numbers::pi);
+    if (light_circling_) move_light(2 * std::numbers::pi * seconds / kLightTurnSeconds, 0);
+}
+
+const SceneAssets& App::scene_assets() {
+    if (!scene_assets_) scene_assets_ = std::make_unique<SceneAssets>(make_scene_assets(model_));
+    return *scene_assets_;
+}
+
+PreparedScene& App::prepared_scene(const Flavour& flavour) {
+    std::unique_ptr<PreparedScene>& slot = prepared_scene_[&flavour == &student_ ? 0 : 1];
+    if (!slot) slot = flavour.prepare_scene(scene_assets());
+    return *slot;
+}
+
+View App::view() {
+    // The shadowed mode's floor reaches past the model's unit sphere: near and far hold it too.
+    const double radius = mode_ == Mode::kShadowed ? scene_assets().scene_radius : 1.0;
+    return camera_.view(model_yaw_, 45, radius);
 }
 
 const PreparedMesh& App::prepared(const Flavour& flavour) {
@@ -181,6 +204,10 @@ FrameInfo App::render(Target& target) {
             case Plan::Path::kWireframe:
                 target.color.fill(kBackground);
                 info.counts = plan_.transforms->wireframe(target.color, geometry, v, plan_.primitive->draw_line, kWireColor);
+                break;
+            case Plan::Path::kScene:
+                info.counts = plan_.mesh->draw_scene(target, prepared_scene(*plan_.mesh), v, light_,
+                                                     scene_setup(mode_, scene_assets()), kBackground);
                 break;
         }
     } catch (const std::exception& e) {
@@ -231,13 +258,16 @@ void App::draw_overlay(Image& img, const FrameInfo& info) const {
     write_lines(img, 10, 10, top);
 
     std::vector<Line> bottom;
-    bottom.push_back({{model_.name + ": " + grouped(triangles) + " triangles, culling " + (cull_ ? "on" : "off") +
-                           (spin_ ? ", spinning" : ""),
+    const std::string culling = is_scene_mode(mode_) ? "no culling (m5 draws both faces)"
+                                                     : std::string("culling ") + (cull_ ? "on" : "off");
+    bottom.push_back({{model_.name + ": " + grouped(triangles) + " triangles, " + culling + (spin_ ? ", spinning" : "") +
+                           (light_circling_ ? ", light circling" : ""),
                        kDim}});
     if (help_) {
         bottom.push_back({{"1-6 wireframe flat Gouraud per-pixel depth normals", kText}});
+        bottom.push_back({{"7-9 textured specular shadowed (milestone 5)", kText}});
         bottom.push_back({{"drag/arrows orbit   right drag/ADQE pan   wheel/WS zoom", kText}});
-        bottom.push_back({{"shift+drag/IJKL light  space spin  C cull  R reset", kText}});
+        bottom.push_back({{"shift+drag/IJKL light  O circle it  space spin  C cull  R reset", kText}});
         bottom.push_back({{"H hide help   P screenshot   Esc quit", kText}});
     } else {
         bottom.push_back({{"H: help", kText}});

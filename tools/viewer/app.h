@@ -12,6 +12,7 @@
 #include "model.h"
 #include "plan.h"
 #include "probe.h"
+#include "scene.h"
 
 namespace viewer {
 
@@ -36,11 +37,21 @@ public:
     const OrbitCamera& camera() const { return camera_; }
     // Turns the light around the model (radians): azimuth about y, elevation up and down.
     void move_light(double azimuth, double elevation);
+    // Puts the light at (azimuth, elevation) (radians; the elevation clamped as move_light's).
+    void set_light(double azimuth, double elevation);
+    double light_azimuth() const { return light_azimuth_; }
+    double light_elevation() const { return light_elevation_; }
+    // The light circles the model (one turn in kLightTurnSeconds of animation) or stops.
+    void toggle_light_circle() { light_circling_ = !light_circling_; }
+    bool light_circling() const { return light_circling_; }
+    static constexpr double kLightTurnSeconds = 8;
     void toggle_cull() { cull_ = !cull_; }
     void toggle_spin() { spin_ = !spin_; }
     void toggle_help() { help_ = !help_; }
     bool spinning() const { return spin_; }
-    // Advances the spin by `seconds` of animation.
+    // Something moves by itself (the spin or the circling light): the window keeps drawing.
+    bool animating() const { return spin_ || light_circling_; }
+    // Advances the spin and the circling light by `seconds` of animation.
     void advance(double seconds);
 
     // ---- a frame ----
@@ -54,9 +65,13 @@ public:
     const Plan& plan() const { return plan_; }
     const Stages& stages() const { return stages_; }
 
+    // What the scene modes draw for this model (made when first needed).
+    const SceneAssets& scene_assets();
+
 private:
     const PreparedMesh& prepared(const Flavour& flavour);
-    View view() const { return camera_.view(model_yaw_); }
+    PreparedScene& prepared_scene(const Flavour& flavour);
+    View view();
 
     const Flavour& student_;
     const Flavour& reference_;
@@ -64,6 +79,8 @@ private:
     Model model_;
     std::string model_error_;
     std::array<std::unique_ptr<PreparedMesh>, 2> prepared_;  // per flavour, made when first drawn
+    std::unique_ptr<SceneAssets> scene_assets_;               // made when a scene mode first draws
+    std::array<std::unique_ptr<PreparedScene>, 2> prepared_scene_;
 
     Mode mode_ = Mode::kGouraud;
     Plan plan_;
@@ -72,6 +89,7 @@ private:
     double light_azimuth_ = -0.7, light_elevation_ = 0.6;
     bool cull_ = true;
     bool spin_ = false;
+    bool light_circling_ = false;
     bool help_ = true;
     double model_yaw_ = 0;
     double smoothed_ms_ = 0;  // the render time, averaged over the last frames, for the screen

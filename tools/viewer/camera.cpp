@@ -47,18 +47,20 @@ Vec3 OrbitCamera::eye() const {
     return target_ + back * distance_;
 }
 
-View OrbitCamera::view(double model_yaw, double fovy_degrees) const {
+View OrbitCamera::view(double model_yaw, double fovy_degrees, double scene_radius) const {
     View v;
     v.eye = eye();
     v.target = target_;
     v.up = {0, 1, 0};
     v.fovy_degrees = fovy_degrees;
     v.model_yaw = model_yaw;
-    // The model lies within distance 1 of the origin: between d - 1 and d + 1 from the eye.
-    // Hugging it keeps depth precise far away; inside it, near stays a small positive number.
+    // The model lies within distance 1 of the origin (the scene within scene_radius): between
+    // d - r and d + r from the eye. Hugging it keeps depth precise far away; inside it, near
+    // stays a small positive number.
+    const double r = std::isfinite(scene_radius) && scene_radius >= 1 ? scene_radius : 1.0;
     const double d = raster::length(v.eye);
-    v.near = std::max(d - 1.05, 1e-3);
-    v.far = std::max(d + 1.05, 2 * v.near);
+    v.near = std::max(d - r - 0.05, 1e-3);
+    v.far = std::max(d + r + 0.05, 2 * v.near);
     return v;
 }
 

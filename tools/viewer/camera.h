@@ -29,7 +29,8 @@ public:
     // Multiplies the distance to the target by factor (< 1: closer).
     void zoom(double factor);
 
-    View view(double model_yaw, double fovy_degrees = 45) const;
+    // The view for a scene within `scene_radius` of the origin (near and far hug that sphere).
+    View view(double model_yaw, double fovy_degrees = 45, double scene_radius = 1) const;
     raster::Vec3 eye() const;
     double distance() const { return distance_; }
 

@@ -1,11 +1,13 @@
 // viewer: the student's own rasterizer in a window (SDL2). Orbit, pan and zoom around a model,
-// switch between wireframe, flat, Gouraud, per-pixel, depth and normals, move the light. Each
+// switch between wireframe, flat, Gouraud, per-pixel, depth and normals (milestones 1 to 4) and
+// textured, specular and shadowed (milestone 5), move the light or let it circle. Each
 // milestone the student has not finished yet is drawn by the reference, and the screen says so.
 //
 //   viewer [MODEL] [options]     MODEL: an .obj file, a model of common/models by name (cube,
 //                                soccer_ball...), or torus / sphere / big-torus (generated);
 //                                default: a generated torus
-//   --mode NAME                  start in wireframe, flat, gouraud, perpixel, depth or normals
+//   --mode NAME                  start in wireframe, flat, gouraud, perpixel, depth, normals,
+//                                textured, specular or shadowed
 //   --size WxH                   window size (default 800x600)
 //   --spin / --still / --no-help start spinning (the default in a window opened by hand) /
 //                                not spinning / with the key help hidden
@@ -14,6 +16,8 @@
 //   --events "STEPS"             scripted mode (script.h): inject events, take screenshots, exit
 //   --script FILE                the same, steps read from FILE
 //   --probe                      print which milestones are yours and exit (no window)
+//   --gif FILE [FRAMES]          write an animated GIF of the light circling the model once
+//                                (default 36 frames; --size sets its size), and exit (no window)
 //   --bench [FRAMES]             time the reference on ~100,000 triangles at 800x600 (no window)
 //
 // Headless: SDL_VIDEODRIVER=dummy works (scripted mode, screenshots), as does xvfb-run -a.
@@ -26,11 +30,13 @@
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "app.h"
+#include "raster/gif.h"
 #include "raster/io.h"
 #include "raster/timer.h"
 #include "script.h"
@@ -50,21 +56,26 @@ struct Options {
     bool probe_only = false;
     bool bench = false;
     int bench_frames = 60;
+    std::string gif;
+    int gif_frames = 36;
     bool scripted = false;
     std::vector<viewer::Step> script;
 };
 
-constexpr const char* kModeNames[viewer::kModeCount] = {"wireframe", "flat", "gouraud", "perpixel", "depth", "normals"};
+constexpr const char* kModeNames[viewer::kModeCount] = {"wireframe", "flat",     "gouraud",  "perpixel", "depth",
+                                                         "normals",   "textured", "specular", "shadowed"};
 
 void usage(std::ostream& out, const char* argv0) {
     out << "usage: " << argv0
               << " [MODEL.obj | torus | sphere | big-torus | cube | soccer_ball ...]\n"
-                 "  [--mode wireframe|flat|gouraud|perpixel|depth|normals] [--size WxH] [--spin | --still] [--no-help]\n"
-                 "  [--reference] [--events \"STEPS\" | --script FILE] [--probe] [--bench [FRAMES]]\n"
+                 "  [--mode wireframe|flat|gouraud|perpixel|depth|normals|textured|specular|shadowed] [--size WxH]\n"
+                 "  [--spin | --still] [--no-help] [--reference] [--events \"STEPS\" | --script FILE] [--probe]\n"
+                 "  [--gif FILE [FRAMES]] [--bench [FRAMES]]\n"
                  "Scripted steps (';' or new lines): key NAME [N]; drag BUTTON X0 Y0 X1 Y1; wheel N; frames N;\n"
                  "  screenshot FILE; quit\n"
-                 "Keys: 1-6 mode, drag or arrows orbit, right drag or A D Q E pan, wheel or W S zoom,\n"
-                 "  shift+drag or I J K L light, space spin, C culling, R reset, H help, P screenshot, Esc quit\n";
+                 "Keys: 1-9 mode, drag or arrows orbit, right drag or A D Q E pan, wheel or W S zoom,\n"
+                 "  shift+drag or I J K L light, O light circles, space spin, C culling, R reset, H help,\n"
+                 "  P screenshot, Esc quit\n";
 }
 
 bool parse_options(int argc, char** argv, Options& o) {
@@ -105,6 +116,10 @@ bool parse_options(int argc, char** argv, Options& o) {
         } else if (a == "--bench") {
             o.bench = true;
             if (i + 1 < argc && std::atoi(argv[i + 1]) > 0) o.bench_frames = std::atoi(argv[++i]);
+        } else if (a == "--gif") {
+            if (!value(o.gif) || o.gif.empty()) return false;
+            if (i + 1 < argc && std::atoi(argv[i + 1]) > 0) o.gif_frames = std::atoi(argv[++i]);
+            if (o.gif_frames < 2 || o.gif_frames > 400) return false;
         } else if (a == "--events") {
             if (!value(script_text)) return false;
             o.scripted = true;
@@ -170,6 +185,34 @@ int run_bench(int frames) {
                     viewer::mode_name(mode), ms, 1000 / ms, triangles / ms / 1000, met ? "met" : "NOT met");
     }
     std::printf("60 fps goal (16.7 ms per frame): %s\n", all_met ? "met in every mode" : "not met in every mode");
+    return 0;
+}
+
+// ---- the GIF: the light circling once, no window ----
+
+int run_gif(App& app, const Options& o) {
+    std::vector<raster::Image> frames;
+    viewer::Target target;
+    // The light a little lower than the window's first one: longer shadows, past the model.
+    const double start = app.light_azimuth(), elevation = app.light_elevation() - 0.15;
+    for (int i = 0; i < o.gif_frames; ++i) {
+        app.set_light(start + 2 * std::numbers::pi * i / o.gif_frames, elevation);
+        target.color = raster::Image(o.width, o.height);
+        const viewer::FrameInfo info = app.render(target);
+        if (!info.failure.empty()) {
+            std::cerr << "viewer: " << info.failure << "\n";
+            return 1;
+        }
+        frames.push_back(target.color);
+    }
+    try {
+        raster::write_gif(o.gif, frames, 8);
+    } catch (const std::exception& e) {
+        std::cerr << "viewer: " << e.what() << "\n";
+        return 1;
+    }
+    std::cout << "viewer: " << viewer::mode_name(app.mode()) << ", drawn by " << app.plan().description << ": "
+              << o.gif_frames << " frames of " << o.width << "x" << o.height << " written to " << o.gif << "\n";
     return 0;
 }
 
@@ -324,6 +367,7 @@ private:
             case SDLK_l: app_.move_light(kTurn, 0); break;
             case SDLK_i: app_.move_light(0, kTurn); break;
             case SDLK_k: app_.move_light(0, -kTurn); break;
+            case SDLK_o: app_.toggle_light_circle(); break;
             case SDLK_SPACE: app_.toggle_spin(); break;
             case SDLK_c: app_.toggle_cull(); break;
             case SDLK_r: cam.reset(); break;
@@ -402,7 +446,7 @@ int run_window(App& app, const Options& o) {
         }
 
         // 2. Events: a person's, or the script's. Idle and not animating: wait for one.
-        if (!o.scripted && idle && !app.spinning()) SDL_WaitEventTimeout(nullptr, 250);
+        if (!o.scripted && idle && !app.animating()) SDL_WaitEventTimeout(nullptr, 250);
         SDL_Event e;
         int w = 0, h = 0;
         SDL_GetRendererOutputSize(renderer, &w, &h);
@@ -486,6 +530,7 @@ int main(int argc, char** argv) {
     if (!error.empty()) std::cout << "viewer: " << error << "\n";
     app.set_model(std::move(model), error);
     app.set_mode(o.mode);
+    if (!o.gif.empty()) return run_gif(app, o);
     // A window opened by hand starts turning (space stops it); a script starts still, so that
     // each of its screenshots shows only what its steps did.
     if (o.spin || (!o.scripted && !o.still)) app.toggle_spin();

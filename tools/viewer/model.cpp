@@ -50,12 +50,14 @@ bool fit_unit_sphere(raster::Mesh& mesh) {
 }
 
 bool make_named(const std::string& name, Model& out) {
-    if (name == "torus") {
-        out = finish(raster::make_torus(1.0, 0.42, 48, 24), "torus (generated)");
+    constexpr double kMajor = 1.0, kMinor = 0.42;
+    if (name == "torus" || name == "big-torus") {
+        out = name == "torus" ? finish(raster::make_torus(kMajor, kMinor, 48, 24), "torus (generated)")
+                              : finish(raster::make_torus(kMajor, kMinor, 250, 200), "torus of 100,000 triangles (generated)");
+        out.uv_mapping = UvMapping::kTorus;
+        out.ring_radius = kMajor / (kMajor + kMinor);  // fitting scales the outer radius to 1
     } else if (name == "sphere") {
         out = finish(raster::make_uv_sphere(24, 48), "sphere (generated)");
-    } else if (name == "big-torus") {
-        out = finish(raster::make_torus(1.0, 0.42, 250, 200), "torus of 100,000 triangles (generated)");
     } else {
         const std::vector<std::string> shipped = raster::model_names();
         if (std::find(shipped.begin(), shipped.end(), name) == shipped.end()) return false;

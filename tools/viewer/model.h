@@ -11,10 +11,16 @@
 
 namespace viewer {
 
+// How milestone 5's modes put a texture on the model (scene.h): the generated tori by their
+// own two angles, everything else by a spherical mapping around the y axis.
+enum class UvMapping { kSpherical, kTorus };
+
 struct Model {
     raster::Mesh mesh;
     std::vector<std::array<int, 2>> edges;  // the wireframe: every polygon edge once
     std::string name;
+    UvMapping uv_mapping = UvMapping::kSpherical;
+    double ring_radius = 0;  // kTorus: the radius of the tube's center circle, after fitting
 };
 
 // A generated torus (the default), or any name make_named knows.

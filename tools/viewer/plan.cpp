@@ -10,6 +10,9 @@ const char* mode_name(Mode mode) {
         case Mode::kPerPixel: return "per-pixel";
         case Mode::kDepth: return "depth view";
         case Mode::kNormals: return "normals view";
+        case Mode::kTextured: return "textured";
+        case Mode::kSpecular: return "specular";
+        case Mode::kShadowed: return "shadowed";
     }
     return "?";
 }
@@ -20,7 +23,11 @@ Plan make_plan(Mode mode, const Stages& stages, const Flavour& student, const Fl
     const auto whose = [&](int stage) { return std::string(yours(stage) ? "your" : "reference"); };
 
     Plan plan;
-    if (mode == Mode::kWireframe) {
+    if (is_scene_mode(mode)) {
+        plan.path = Plan::Path::kScene;
+        plan.mesh = pick(5);
+        plan.description = yours(5) ? "your m5 draw_scene (your m1-m4 inside)" : "reference m5 draw_scene";
+    } else if (mode == Mode::kWireframe) {
         plan.path = Plan::Path::kWireframe;
         plan.transforms = pick(3);
         plan.primitive = pick(1);

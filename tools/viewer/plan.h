@@ -9,9 +9,12 @@
 //               before milestone 4; reference lighting). Else the reference's draw_mesh.
 //   Gouraud, per-pixel, depth, normals
 //               the student's m4::draw_mesh when milestone 4 is finished, else the reference's.
+//   textured, specular, shadowed
+//               the student's m5::draw_scene when milestone 5 is finished, else the reference's.
 //
 // The student's draw_mesh runs the student's milestones 1 to 3 inside it (it was compiled
-// against them), and its probe checks that whole chain.
+// against them), and its probe checks that whole chain; likewise draw_scene runs the student's
+// milestones 1 to 4.
 #pragma once
 
 #include <string>
@@ -22,9 +25,9 @@
 namespace viewer {
 
 struct Plan {
-    enum class Path { kDrawMesh, kPainter, kWireframe };
+    enum class Path { kDrawMesh, kPainter, kWireframe, kScene };
     Path path = Path::kDrawMesh;
-    const Flavour* mesh = nullptr;        // kDrawMesh: whose m4::draw_mesh
+    const Flavour* mesh = nullptr;        // kDrawMesh: whose m4::draw_mesh; kScene: whose m5::draw_scene
     const Flavour* transforms = nullptr;  // kPainter, kWireframe: whose milestone-3 loop
     const Flavour* primitive = nullptr;   // kPainter: whose m2 triangles; kWireframe: whose m1 lines
     const Flavour* lighting = nullptr;    // kPainter: whose m4 lighting

@@ -23,6 +23,7 @@ const char* stage_title(int stage) {
         case 2: return "triangles";
         case 3: return "transforms";
         case 4: return "depth+light";
+        case 5: return "textures";
     }
     return "?";
 }
@@ -37,11 +38,18 @@ int channel_gap(raster::Color a, raster::Color b) {
 
 // One probe: the student's result against the reference's.
 StageResult run_probe(const Flavour& student, const Flavour& reference, int stage) {
+    const bool missing = (stage == 1 && (!student.probe_m1 || !reference.probe_m1)) ||
+                         (stage == 2 && (!student.probe_m2 || !reference.probe_m2)) ||
+                         (stage == 3 && (!student.probe_m3 || !reference.probe_m3)) ||
+                         (stage == 4 && (!student.probe_m4 || !reference.probe_m4)) ||
+                         (stage == 5 && (!student.probe_m5 || !reference.probe_m5));
+    if (missing) return {false, "no probe for this milestone"};
     switch (stage) {
         case 1: return compare_images(student.probe_m1(), reference.probe_m1(), 0, 0.03);
         case 2: return compare_images(student.probe_m2(), reference.probe_m2(), 1, 0.03);
         case 3: return compare_numbers(student.probe_m3(), reference.probe_m3());
         case 4: return compare_images(student.probe_m4(), reference.probe_m4(), 8, 0.04);
+        case 5: return compare_images(student.probe_m5(), reference.probe_m5(), 8, 0.04);
     }
     return {false, "no such milestone"};
 }

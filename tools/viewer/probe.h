@@ -1,5 +1,5 @@
 // Which milestones has the student finished? The viewer decides it by experiment, once at start:
-// per milestone, a small fixed test (flavour.cpp's probe_m1 ... probe_m4) is drawn by the
+// per milestone, a small fixed test (flavour.cpp's probe_m1 ... probe_m5) is drawn by the
 // student's code and by the reference, and the stage counts as the student's when the results
 // match, or nearly match (lines may break ties differently, lit pixels may differ by a few
 // levels). The untouched skeletons draw nothing or return zeros, so they never match.
@@ -16,7 +16,7 @@
 
 namespace viewer {
 
-inline constexpr int kStages = 4;  // milestones 1 to 4; index 0 is milestone 1
+inline constexpr int kStages = 5;  // milestones 1 to 5; index 0 is milestone 1
 
 struct StageResult {
     bool yours = false;  // the student's code matched the reference: the viewer uses it
@@ -24,7 +24,7 @@ struct StageResult {
 };
 using Stages = std::array<StageResult, kStages>;
 
-// What milestone `stage` (1..4) is called on screen: "lines", "triangles", ...
+// What milestone `stage` (1..5) is called on screen: "lines", "triangles", ...
 const char* stage_title(int stage);
 
 struct ProbeOptions {
@@ -32,7 +32,7 @@ struct ProbeOptions {
     double timeout_seconds = 5.0;  // per probe, when isolated
 };
 
-// Probes the four milestones of `student` against `reference`.
+// Probes the five milestones of `student` against `reference`.
 Stages probe_stages(const Flavour& student, const Flavour& reference, const ProbeOptions& options = {});
 
 // Every stage the reference's, with `why` as the detail (the --reference option).

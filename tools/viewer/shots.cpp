@@ -2,6 +2,11 @@
 //
 //   viewer_shots A.png            prints "size W H drawn N thin T"
 //   viewer_shots A.png B.png      the same for A, then "differ D" (pixels that differ, A vs B)
+//   viewer_shots --gif A.gif      prints "gif W H frames N delay C moving M drawn D": the size,
+//                                 the frame count, the first frame's delay (centiseconds), the
+//                                 pixels that differ between the first frame and the one half
+//                                 way through, and the first frame's drawn pixels (whole frames:
+//                                 the GIF carries no text)
 //
 // Only the middle of the window is measured, rows h/6 to h - h/8: the text the viewer draws
 // at the top and the bottom (with --no-help) stays out of it. A pixel is "drawn" when it is far
@@ -13,7 +18,9 @@
 #include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <string>
 
+#include "raster/gif.h"
 #include "raster/image.h"
 #include "raster/io.h"
 
@@ -44,14 +51,38 @@ void measure(const raster::Image& img) {
     std::cout << "size " << img.width() << " " << img.height() << " drawn " << count << " thin " << thin << "\n";
 }
 
+void measure_gif(const std::string& path) {
+    const raster::GifInfo gif = raster::read_gif(path);
+    long long moving = 0, count = 0;
+    if (!gif.frames.empty()) {
+        const raster::Image& first = gif.frames.front();
+        const raster::Image& middle = gif.frames[gif.frames.size() / 2];
+        for (int y = 0; y < first.height(); ++y)
+            for (int x = 0; x < first.width(); ++x) {
+                moving += gap(first.at(x, y), middle.at(x, y)) > 24;
+                count += drawn(first, x, y);
+            }
+    }
+    std::cout << "gif " << gif.width << " " << gif.height << " frames " << gif.frames.size() << " delay "
+              << (gif.delays.empty() ? 0 : gif.delays.front()) << " moving " << moving << " drawn " << count << "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     if (argc != 2 && argc != 3) {
-        std::cerr << "usage: viewer_shots A.png [B.png]\n";
+        std::cerr << "usage: viewer_shots A.png [B.png] | viewer_shots --gif A.gif\n";
         return 2;
     }
     try {
+        if (std::string(argv[1]) == "--gif") {
+            if (argc != 3) {
+                std::cerr << "usage: viewer_shots --gif A.gif\n";
+                return 2;
+            }
+            measure_gif(argv[2]);
+            return 0;
+        }
         const raster::Image a = raster::read_png(argv[1]);
         measure(a);
         if (argc == 3) {
