@@ -62,6 +62,10 @@
 #include "m4/judge.h"
 #include "m4/render.h"
 #include "m4/scenes.h"
+#include "m5/functions.h"
+#include "m5/judge.h"
+#include "m5/render.h"
+#include "m5/scenes.h"
 #include "raster/io.h"
 
 namespace fs = std::filesystem;
@@ -99,6 +103,8 @@ const std::vector<cp::Suite>& suites() {
                        m3cp::topics(), m3cp::use_variant),
         cp::make_suite("m4", m4cp::scenes, nullptr, m4cp::reference::render, m4cp::judge, m4cp::functions(),
                        m4cp::topics(), m4cp::use_variant),
+        cp::make_suite("m5", m5cp::scenes, nullptr, m5cp::reference::render, m5cp::judge, m5cp::functions(),
+                       m5cp::topics(), m5cp::use_variant),
     };
     return all;
 }

@@ -3,7 +3,7 @@
 # (clang), each milestone for a given time, and stops at the first crash, undefined behaviour,
 # write outside an image, broken promise of a header, or input slower than 500 ms.
 #
-#   bash tools/fuzz.sh [--seconds N] [--student] [--build DIR] [m1 m2 m3 m4]
+#   bash tools/fuzz.sh [--seconds N] [--student] [--build DIR] [m1 m2 m3 m4 m5]
 #
 # --seconds N: per milestone (default: $FUZZ_SECONDS, else 60). --student: fuzz your own code
 # (milestone folders) instead of the reference (or FUZZ_STUDENT=1). --build DIR: the clang
@@ -22,12 +22,12 @@ while [ $# -gt 0 ]; do
     --seconds) seconds=$2; shift 2 ;;
     --student) student=1; shift ;;
     --build) build=$2; shift 2 ;;
-    m1|m2|m3|m4) milestones+=("$1"); shift ;;
+    m1|m2|m3|m4|m5) milestones+=("$1"); shift ;;
     -h|--help) sed -n 2,15p "$0"; exit 0 ;;
     *) echo "fuzz.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-[ ${#milestones[@]} -gt 0 ] || milestones=(m1 m2 m3 m4)
+[ ${#milestones[@]} -gt 0 ] || milestones=(m1 m2 m3 m4 m5)
 case "$seconds" in ''|*[!0-9]*) echo "fuzz.sh: --seconds wants a whole number, not '$seconds'" >&2; exit 2 ;; esac
 
 if ! command -v clang++ >/dev/null; then

@@ -23,7 +23,7 @@ srctool=$(find "$build/tools" -maxdepth 2 -type f -name srctool -perm -u+x | hea
 # The kit's include folder, as the grader builds it.
 kit=$work/kit; mkdir -p "$kit/include"
 cp -R "$root/common/include/." "$kit/include/"
-for d in milestone1_lines milestone2_triangles milestone3_transforms milestone4_depth_lighting; do cp "$root/$d"/*.h "$kit/include/"; done
+for d in milestone1_lines milestone2_triangles milestone3_transforms milestone4_depth_lighting milestone5_textures_shadows; do cp "$root/$d"/*.h "$kit/include/"; done
 mapfile -t system_includes < <(# shellcheck disable=SC2086
   $KIT_CXX $KIT_CXXFLAGS -x c++ -E -v /dev/null 2>&1 >/dev/null |
   sed -n '/^#include <...> search starts here:/,/^End of search list\./{s/^ //p}')
@@ -60,8 +60,9 @@ prebuilt_used=0 prebuilt_deps=()
 
 checked=0
 declare -A solution=([m1]=milestone1_lines/lines.cpp [m2]=milestone2_triangles/triangles.cpp
-                     [m3]=milestone3_transforms/transforms.cpp [m4]=milestone4_depth_lighting/depth_lighting.cpp)
-for m in m1 m2 m3 m4; do
+                     [m3]=milestone3_transforms/transforms.cpp [m4]=milestone4_depth_lighting/depth_lighting.cpp
+                     [m5]=milestone5_textures_shadows/textures_shadows.cpp)
+for m in m1 m2 m3 m4 m5; do
   src=${solution[$m]}
   prebuilt=$build/checkpoints/lib${m}_reference.a prebuilt_deps=("$root/solutions/$src")
   try "$m-reference" "$root/solutions/$src" || fail "the reference of $m is refused (above)"

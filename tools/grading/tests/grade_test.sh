@@ -31,13 +31,15 @@ fail() {
 if [ "$(id -u)" != 0 ]; then echo "skipped: the grader's tests need root (a sandbox uid)"; exit 77; fi
 
 # A submission folder with each milestone's file: from solutions/, the skeleton, or given.
-make_submission() {  # dir [m1-file] [m2-file] [m3-file] [m4-file]
+make_submission() {  # dir [m1-file] [m2-file] [m3-file] [m4-file] [m5-file]
   local dir=$1
-  mkdir -p "$dir/milestone1_lines" "$dir/milestone2_triangles" "$dir/milestone3_transforms" "$dir/milestone4_depth_lighting"
+  mkdir -p "$dir/milestone1_lines" "$dir/milestone2_triangles" "$dir/milestone3_transforms" "$dir/milestone4_depth_lighting" \
+    "$dir/milestone5_textures_shadows"
   cp "${2:-$root/solutions/milestone1_lines/lines.cpp}" "$dir/milestone1_lines/lines.cpp"
   cp "${3:-$root/solutions/milestone2_triangles/triangles.cpp}" "$dir/milestone2_triangles/triangles.cpp"
   cp "${4:-$root/solutions/milestone3_transforms/transforms.cpp}" "$dir/milestone3_transforms/transforms.cpp"
   cp "${5:-$root/solutions/milestone4_depth_lighting/depth_lighting.cpp}" "$dir/milestone4_depth_lighting/depth_lighting.cpp"
+  cp "${6:-$root/solutions/milestone5_textures_shadows/textures_shadows.cpp}" "$dir/milestone5_textures_shadows/textures_shadows.cpp"
 }
 # score <results.json> [test-name-prefix]: the points earned (of tests with that prefix).
 score() { python3 -c "
@@ -110,7 +112,8 @@ case "$case_name" in
     ;;
   skeleton)
     make_submission "$work/sub" "$root/milestone1_lines/lines.cpp" "$root/milestone2_triangles/triangles.cpp" \
-      "$root/milestone3_transforms/transforms.cpp" "$root/milestone4_depth_lighting/depth_lighting.cpp"
+      "$root/milestone3_transforms/transforms.cpp" "$root/milestone4_depth_lighting/depth_lighting.cpp" \
+      "$root/milestone5_textures_shadows/textures_shadows.cpp"
     # The committed skeleton must be the generated one (another test checks); grade it.
     bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 "$work/sub"
     got=$(score "$work/out/results.json")
@@ -146,6 +149,7 @@ case "$case_name" in
         m2) make_submission "$work/$bug" "" "$src" ;;
         m3) make_submission "$work/$bug" "" "" "$src" ;;
         m4) make_submission "$work/$bug" "" "" "" "$src" ;;
+        m5) make_submission "$work/$bug" "" "" "" "" "$src" ;;
       esac
       bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out-$bug" --seed 1 --milestones "$m" \
         --only "$must_fail" --time 4 --watchdog 1 "$work/$bug" >"$work/$bug.log" 2>&1 ||

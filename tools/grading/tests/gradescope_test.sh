@@ -23,7 +23,8 @@ for f in setup.sh run_autograder hidden/hidden.json; do [ -f "$ag/source/$f" ] |
 AUTOGRADER_ROOT=$ag bash "$ag/source/setup.sh" >"$work/setup.log" 2>&1 || { tail -n 30 "$work/setup.log"; exit 1; }
 cp "$root/solutions/milestone1_lines/lines.cpp" "$root/solutions/milestone2_triangles/triangles.cpp" \
    "$root/solutions/milestone3_transforms/transforms.cpp" \
-   "$root/solutions/milestone4_depth_lighting/depth_lighting.cpp" "$ag/submission/"
+   "$root/solutions/milestone4_depth_lighting/depth_lighting.cpp" \
+   "$root/solutions/milestone5_textures_shadows/textures_shadows.cpp" "$ag/submission/"
 AUTOGRADER_ROOT=$ag RASTER_SANDBOX_MODE=plain bash "$ag/source/run_autograder" >"$work/run.log" 2>&1 || true
 python3 - "$ag/results/results.json" full <<'PY' || { cat "$work/run.log"; exit 1; }
 import json, sys
