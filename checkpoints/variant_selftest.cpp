@@ -11,6 +11,7 @@
 #include "m2/scenes.h"
 #include "m3/scenes.h"
 #include "m4/scenes.h"
+#include "m5/scenes.h"
 
 namespace {
 
@@ -132,6 +133,74 @@ std::vector<std::string> dump_m4() {
     return out;
 }
 
+std::vector<std::string> dump_m5() {
+    std::vector<std::string> out;
+    for (const m5cp::Scene& s : m5cp::scenes()) {
+        std::ostringstream o;
+        o << s.id << "|" << s.title << "|" << s.hint << "|" << s.width << "x" << s.height << "|" << s.demo;
+        auto material = [&o](const m5cp::MaterialSpec& m) {
+            o << col(m.color) << m.texture << int(m.filter) << v3(m.specular) << num(m.shininess) << m.normal_map << m.lit;
+        };
+        for (const m5cp::Panel& p : s.panels) {
+            const m5cp::Camera& c = p.camera;
+            o << "|" << v3(c.eye) << v3(c.target) << v3(c.up) << num(c.fovy) << num(c.near) << num(c.far) << p.x0 << ","
+              << p.y0 << "," << p.w << "," << p.h << col(p.background) << v3(p.ambient);
+            const m5cp::ShadowSpec& sh = p.shadows;
+            o << sh.resolution << v3(sh.center) << num(sh.radius) << num(sh.constant_bias) << num(sh.slope_bias) << sh.pcf;
+            for (const m5cp::LightSpec& l : p.lights) o << "/" << v3(l.direction) << v3(l.intensity) << l.casts_shadows;
+            for (const m5cp::TextureSpec& t : p.textures) {
+                o << "/" << int(t.pattern) << t.width << "x" << t.height << t.cells << col(t.a) << col(t.b) << int(t.wrap_u)
+                  << int(t.wrap_v) << t.seed;
+            }
+            for (const m5cp::Item& it : p.items) {
+                o << "/" << v3(it.position) << v3(it.axis) << num(it.angle) << v3(it.size) << it.casts_shadow;
+                material(it.material);
+                for (const raster::Vec3& v : it.mesh.positions) o << v3(v);
+                for (const raster::Vec2& v : it.mesh.uvs) o << num(v.x) << num(v.y);
+                o << it.mesh.triangles.size();
+            }
+            for (const m5cp::ScreenTri& t : p.screen_tris) {
+                for (int k = 0; k < 3; ++k) o << v3(t.screen[std::size_t(k)]) << num(t.w[std::size_t(k)]);
+                material(t.material);
+            }
+        }
+        // The number groups' inputs belong to their checkpoints.
+        if (s.id == "m5.wrap") {
+            for (const m5cp::WrapCase& k : m5cp::wrap_cases()) o << num(k.i) << k.n << int(k.mode);
+        }
+        if (s.id == "m5.sampling") {
+            for (int l = 0; l < 2; ++l) {
+                for (const raster::Vec3& t : m5cp::sample_level(l).texels) o << v3(t);
+            }
+            for (const m5cp::SampleCase& k : m5cp::sample_cases()) o << num(k.uv.x) << num(k.uv.y);
+        }
+        if (s.id == "m5.mipmaps") {
+            for (const m5cp::LevelData& l : m5cp::mip_bases()) {
+                for (const raster::Vec3& t : l.texels) o << v3(t);
+            }
+        }
+        if (s.id == "m5.lod") {
+            for (const m5cp::LodCase& k : m5cp::lod_cases()) o << num(k.x) << num(k.y) << num(k.w[0]);
+            for (const m5cp::LambdaCase& k : m5cp::lambda_cases()) o << num(k.du_dx) << num(k.dv_dy);
+        }
+        if (s.id == "m5.filters") {
+            for (const m5cp::FilterCase& k : m5cp::filter_cases()) o << num(k.uv.x) << num(k.lambda);
+        }
+        if (s.id == "m5.blinn_phong") {
+            for (const m5cp::PhongCase& k : m5cp::phong_cases()) o << v3(k.base) << v3(k.normal) << num(k.shininess);
+        }
+        if (s.id == "m5.normal_maps") {
+            for (const m5cp::FrameCase& k : m5cp::frame_cases()) o << v3(k.p[0]) << num(k.uv[1].x);
+            for (const m5cp::PerturbCase& k : m5cp::perturb_cases()) o << v3(k.tangent) << v3(k.texel);
+        }
+        if (s.id == "m5.shadow_lookup") {
+            for (const m5cp::ShadowCase& k : m5cp::shadow_cases()) o << v3(k.p) << k.pcf;
+        }
+        out.push_back(o.str());
+    }
+    return out;
+}
+
 int failures = 0;
 
 void check(bool ok, const std::string& what) {
@@ -173,5 +242,6 @@ int main() {
     test("m2", m2cp::use_variant, dump_m2);
     test("m3", m3cp::use_variant, dump_m3, 0.5);
     test("m4", m4cp::use_variant, dump_m4, 0.5);
+    test("m5", m5cp::use_variant, dump_m5);
     return failures == 0 ? 0 : 1;
 }

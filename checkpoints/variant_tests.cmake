@@ -98,7 +98,7 @@ endforeach()
 # use_variant(0) after a variant gives back the public scenes, exactly; a seed gives the same
 # variants every time, and they differ from the public scenes.
 add_executable(variant_selftest EXCLUDE_FROM_ALL variant_selftest.cpp)
-target_link_libraries(variant_selftest PRIVATE m1_scenes m2_scenes m3_scenes m4_scenes)
+target_link_libraries(variant_selftest PRIVATE m1_scenes m2_scenes m3_scenes m4_scenes m5_scenes)
 add_dependencies(project-tests variant_selftest)
 add_test(NAME "scene variants: seed 0 restores the public scenes" COMMAND variant_selftest)
 set_tests_properties("scene variants: seed 0 restores the public scenes" PROPERTIES LABELS project)

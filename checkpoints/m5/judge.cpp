@@ -285,7 +285,7 @@ Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
     Vec3 bp = raster::cross(n, tp);
     if (raster::dot(bp, c.bitangent) < 0) bp = -bp;
     if (mode == 2) bp = unit_or_zero(c.bitangent);
-    const Vec3 m = mode == 1 ? c.texel / 255 : c.texel * (2.0 / 255) - Vec3{1, 1, 1};
+    const Vec3 m = mode == 1 ? c.texel / 255 : c.texel * 2.0 / 255 - Vec3{1, 1, 1};
     const Vec3 r = unit_or_zero(tp * m.x + bp * m.y + n * m.z);
     return r == Vec3{} ? n : r;
 }

@@ -244,6 +244,21 @@ Mesh facing_quad(double s, double z, Vec2 uv0, Vec2 uv1) {
     return m;
 }
 
+// A floor trapezoid at height y, from half-width near_half at z_near to far_half at z_far, chosen
+// to lie inside the view volume: nothing is clipped (a clipped polygon's fan is free, and the
+// uv and level of detail of a far, minified fragment depend on the fan triangle's snapped
+// corners). Its uv are the world x and -z times k, one affine map for both triangles.
+Mesh ground(double y, double near_half, double z_near, double far_half, double z_far, double k) {
+    Mesh m;
+    m.positions = {{-near_half, y, z_near}, {near_half, y, z_near}, {far_half, y, z_far}, {-far_half, y, z_far}};
+    m.triangles = {{0, 1, 2}, {0, 2, 3}};
+    for (const Vec3& q : m.positions) {
+        m.uvs.push_back({q.x * k, -q.z * k});
+        m.normals.push_back({0, 1, 0});
+    }
+    return m;
+}
+
 // The shadow scenes' floor and box (standing on the floor, turned about y). The floor lies
 // inside the view volume of the shadow scenes' cameras: a clipped polygon's fan is free, and
 // another fan moves each fragment's world position by up to a 32nd of a pixel, which may move a
@@ -348,8 +363,8 @@ std::vector<Scene> build() {
             t.a = {235, 225, 200};
             t.b = {50, 70, 120};
             Panel pn = panel(cam({0.04, 0.6, 4}, {0.01, -0.6, -6}, 0.5, 100),
-                             {item(floor_quad(-1, 6, 2, -60, {6, 31}), unlit(0, filters[p]))}, {t}, 128 * (p % 2),
-                             80 * (p / 2), 128, 80);
+                             {item(ground(-1, 1.8, 1, 38, -60, 0.5), unlit(0, filters[p]))}, {t}, 128 * (p % 2), 80 * (p / 2),
+                             128, 80);
             pn.timed = true;
             s.panels.push_back(pn);
         }
@@ -384,8 +399,8 @@ std::vector<Scene> build() {
         for (int p = 0; p < 3; ++p) {
             TextureSpec t = texs[p];
             t.seed = 7 + std::uint32_t(p);
-            Panel pn = panel(cam({0.04, 0.7, 3.5}, {0.01, -0.8, -6}, 0.5, 100),
-                             {item(floor_quad(-1, 4, 2, -40, {4, 24}), unlit(0, Filter::kTrilinear))}, {t}, 96 * p, 0, 96, 96);
+            Panel pn = panel(cam({0.04, 0.6, 4}, {0.01, -0.6, -6}, 0.5, 100),
+                             {item(ground(-1, 1.1, 1, 23, -60, 0.5), unlit(0, Filter::kTrilinear))}, {t}, 96 * p, 0, 96, 96);
             s.panels.push_back(pn);
         }
         add(s);
@@ -434,16 +449,7 @@ std::vector<Scene> build() {
             TextureSpec t = tex(Pattern::kChecker, 16, 16, 4);
             t.a = {240, 120, 60};
             t.b = {30, 90, 200};
-            // A trapezoid that lies inside the view volume (nothing is clipped: the fan of a clipped
-            // polygon is free, and each fan triangle's lambda comes from its own snapped corners),
-            // its uv the world x and z over 2, so both triangles share one affine map.
-            Mesh floor;
-            floor.positions = {{-0.8, 0, 3}, {0.8, 0, 3}, {150, 0, -200}, {-150, 0, -200}};
-            floor.triangles = {{0, 1, 2}, {0, 2, 3}};
-            for (const Vec3& q : floor.positions) {
-                floor.uvs.push_back({q.x / 2, q.z / 2});
-                floor.normals.push_back({0, 1, 0});
-            }
+            const Mesh floor = ground(0, 0.8, 3, 150, -200, 0.5);
             Panel pn = panel(cam({0.03, 0.15, 4}, {0.01, 0.02, -10}, 0.05, 300), {item(floor, unlit(0, filters[p]))}, {t},
                              128 * p, 0, 128, 64);
             s.panels.push_back(pn);
@@ -634,6 +640,7 @@ std::vector<Scene> build() {
                 pn.shadows.resolution = 256;
                 pn.shadows.radius = 5;
                 pn.shadows.center = {0, -1, -3};
+                pn.shadows.pcf = false;  // (PCF would need more than the default bias here)
             }
             s.panels.push_back(pn);
         }
@@ -650,24 +657,43 @@ std::vector<Scene> build() {
         m.positions = {{-1.5, -1.3, 0}, {0.2, -1.4, 0}, {-0.6, 0.3, 0},            // good
                        {0.3, -1.3, 0},  {1.6, -1.2, 0}, {0.9, 0.2, 0},              // NaN uv
                        {-1.5, 0.5, 0},  {-0.2, 0.4, 0}, {-0.9, 1.6, 0},             // infinite uv
-                       {0.1, 0.5, 0},   {1.5, 0.4, 0},  {0.8, 1.5, 0},              // 1e300 uv
                        {-1.4, 1.7, 0},  {1.5, 1.72, 0}, {1.5, 1.7200001, 0},        // a needle
                        {kNaN, 0, 0},    {0.5, 0.5, 0},  {1e30, -1e30, -1},          // non-finite; huge (1 behind the rest)
                        {0.2, -0.1, 0.5}, {1.8, 1.6, 0.4}, {-1.6, 0.9, 5},           // one behind the eye
                        {0.5, 0.5, -1},  {0.2, -1.4, -1}};
-        m.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 0}, {17, 21, 22}, {18, 19, 20}, {0, 1, 99}};
-        m.uvs = {{0, 0},    {2, 0},  {1, 2},  {kNaN, 0},    {1, 1},        {0, kNaN},   {kInf, 0},  {1, -kInf}, {0, 0},
-                 {1e300, 0}, {1e300 + 1e285, 3}, {-1e300, 1e300}, {0, 0}, {5, 0}, {5, 1e-7}, {0, 0},     {0.5, 0.5}, {1e30, -1e30},
-                 {0, 0},    {1, 0},  {0, 1},  {0.5, 0.5}, {0.2, -1.4}};
+        m.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 0}, {14, 18, 19}, {0, 1, 99}, {-1, 0, 1}};
+        m.uvs = {{0, 0}, {2, 0}, {1, 2},  {kNaN, 0}, {1, 1}, {0, kNaN},  {kInf, 0}, {1, -kInf}, {0, 0},
+                 {0, 0}, {5, 0}, {5, 1e-7}, {0, 0}, {0.5, 0.5}, {2, 0},  {0, 0}, {1, 0}, {0, 1},  {0, 2}, {1, 1}};
         m.normals.assign(m.positions.size(), Vec3{0, 0, 1});
+        // The triangle through the eye's plane is tilted: its normal is its own, so that the
+        // shadow's slope bias fits the surface (a normal far from the geometric one makes acne,
+        // whose pattern any rounding moves).
+        const Vec3 tilted = unit(raster::cross(m.positions[16] - m.positions[15], m.positions[17] - m.positions[15]));
+        for (int k = 15; k <= 17; ++k) m.normals[std::size_t(k)] = tilted.z < 0 ? -tilted : tilted;
         MaterialSpec mat = plain({200, 200, 200}, {100, 100, 100}, 16);
         mat.texture = 0;
         mat.filter = Filter::kTrilinear;
         mat.normal_map = 1;
-        Panel p0 = panel(cam({0.02, 0.03, 4}), {item(m, mat)}, {tex(Pattern::kChecker, 16, 16, 4), tex(Pattern::kBumps, 16, 16, 2)},
-                         0, 0, 96, 96);
+        // u = 2^996 at every corner: interpolated (with any rounding) it stays a multiple of a huge
+        // power of two, so it wraps exactly to texel column 0. Bilinear: lambda is not needed
+        // (its u derivative, exactly 0, would cancel catastrophically in the textbook formula).
+        Mesh huge = quad({0.1, 0.5, 0}, {1.5, 0.4, 0}, {1.5, 1.5, 0}, {0.1, 1.5, 0});
+        const double big = std::ldexp(1.0, 996);
+        huge.uvs = {{big, 0}, {big, 0}, {big, 3}, {big, 3}};
+        MaterialSpec huge_mat = plain({200, 200, 200});
+        huge_mat.texture = 0;
+        huge_mat.filter = Filter::kBilinear;
+        // The triangle through the eye's plane, clipped by the near plane: its fan is free, and a
+        // sliver of another fan has another level of detail (from its own snapped corners), so it
+        // is sampled bilinearly (with its normal map).
+        Mesh near = m;
+        near.triangles = {{15, 16, 17}};
+        MaterialSpec near_mat = mat;
+        near_mat.filter = Filter::kBilinear;
+        Panel p0 = panel(cam({0.02, 0.03, 4}), {item(m, mat), item(huge, huge_mat), item(near, near_mat)},
+                         {tex(Pattern::kChecker, 16, 16, 4), tex(Pattern::kBumps, 16, 16, 2)}, 0, 0, 96, 96);
         p0.lights = {sun({-0.3, -0.4, -1}, {0.8, 0.8, 0.8}, true)};
-        p0.shadows.resolution = 128;
+        p0.shadows.resolution = 512;  // fine enough for the default bias on the tilted triangle (no acne)
         p0.shadows.pcf = false;  // a hard shadow edge: the clipped triangle's fan is free (see floor_and_box)
         s.panels.push_back(p0);
         // Near 1e-6 and far 1e6: a floor and a box floating above it, seen from just above the
