@@ -14,6 +14,8 @@
 //                                 the table of which TODOs each checkpoint of milestone <m> needs
 //   reference_tool m3-table [...]  likewise, milestone 3's error-against-run-time tables (inverses,
 //                                 rotation drift, a far-away model in float and double)
+//   reference_tool m5-table [...]  milestone 5's tables (filters, shadow maps, needs), each between
+//                                 its markers (m5-filters, m5-shadows, m5-needs), and the chart
 //
 // Expected images come only from here: never edit them by hand.
 #include <filesystem>
@@ -44,6 +46,7 @@
 #include "m5/functions.h"
 #include "m5/render.h"
 #include "m5/scenes.h"
+#include "m5/tables.h"
 #include "m1/functions.h"
 #include "m2/functions.h"
 #include "m3/functions.h"
@@ -290,6 +293,25 @@ int main(int argc, char** argv) {
             }
             return 0;
         }
+        if (!args.empty() && args[0] == "m5-table" && table_args) {
+            // Lesson 5's three tables, each between its own markers, and the filters' chart
+            // beside the lesson (written with --update; with --check it must exist).
+            int rc = marked_table("m5-filters", m5cp::filter_table(), args);
+            if (rc == 0) rc = marked_table("m5-shadows", m5cp::shadow_table(), args);
+            if (rc == 0) rc = marked_table("m5-needs", m5cp::needs_table(), args);
+            if (rc != 0 || args.size() != 3) return rc;
+            const fs::path chart = fs::path(args[2]).parent_path() / "error_vs_time.png";
+            if (args[1] == "--update") {
+                raster::write_png(chart.string(), m5cp::error_time_chart());
+                std::cout << "wrote " << chart.string() << "\n";
+                return 0;
+            }
+            if (raster::read_png(chart.string()).width() != raster::PlotSpec{}.width) {
+                std::cerr << chart.string() << " is missing or not the chart; run `make lesson-tables`\n";
+                return 1;
+            }
+            return 0;
+        }
         if (args.size() >= 2 && args[0] == "todo-table" &&
             (args.size() == 2 || (args.size() == 4 && (args[2] == "--update" || args[2] == "--check")))) {
             std::vector<std::string> rest = {args[0]};
@@ -300,7 +322,7 @@ int main(int argc, char** argv) {
         std::cerr << "reference_tool: " << e.what() << "\n";
         return 1;
     }
-    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table|m1-table|m3-table|m4-table [--update|--check FILE]\n"
+    std::cerr << "usage: reference_tool expected | verify | gallery <dir> | aa-table|m1-table|m3-table|m4-table|m5-table [--update|--check FILE]\n"
                  "       reference_tool todo-table m1|m2|m3|m4|m5 [--update|--check FILE]\n";
     return 2;
 }

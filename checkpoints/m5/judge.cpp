@@ -967,13 +967,11 @@ const TextureSpec* first_texture(const Panel& p) {
     return t >= 0 && std::size_t(t) < p.textures.size() ? &p.textures[std::size_t(t)] : nullptr;
 }
 
+}  // namespace
+
 // The 16x supersampled bilinear truth of item 0 (an unlit textured quad): per pixel the mean of
 // 4x4 bilinear samples at the exact uv of the ray through each; pixels not wholly on the quad
 // are left out (-1 in `valid`).
-struct Truth {
-    raster::Image img;
-    std::vector<char> valid;
-};
 Truth bilinear_truth(const Panel& p) {
     Truth t{raster::Image(p.w, p.h, p.background), std::vector<char>(std::size_t(p.w) * std::size_t(p.h), 0)};
     const TextureSpec* spec = first_texture(p);
@@ -1016,6 +1014,8 @@ double truth_error(const raster::Image& img, const Panel& p, const Truth& t) {
     return n ? sum / (3.0 * double(n)) : 0;
 }
 
+namespace {
+
 // The exact nearest-texel picture of item 0 (an unlit textured quad) at pixel centers.
 Truth nearest_truth(const Panel& p) {
     Truth t{raster::Image(p.w, p.h, p.background), std::vector<char>(std::size_t(p.w) * std::size_t(p.h), 0)};
@@ -1046,6 +1046,8 @@ double share_off(const raster::Image& img, const Panel& p, const Truth& t) {
     }
     return n ? 100.0 * double(off) / double(n) : 0;
 }
+
+}  // namespace
 
 // Pixels in the wrong light state: per pixel center the nearest surface by ray casting, lit or
 // not by a ray to the light; the pixel's color is classified by the nearer of the two colors
@@ -1083,6 +1085,8 @@ std::pair<long long, long long> wrong_light_state(const raster::Image& img, cons
     }
     return {wrong, counted};
 }
+
+namespace {
 
 // The exact spheres (every item a uv_sphere of radius size.x), lit with Blinn-Phong per pixel.
 raster::Image exact_spheres(const Panel& p) {

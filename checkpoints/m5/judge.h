@@ -2,10 +2,29 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "harness/checkpoint.h"
 
 namespace m5cp {
 cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const cp::Artifacts& reference,
                     const raster::Image& expected);
+}  // namespace m5cp
+
+namespace m5cp {
+struct Panel;
+// Exact pictures of a panel, computed from the scene alone (the lesson's tables use them too).
+// The 16x supersampled bilinear truth of item 0 (an unlit textured quad), panel-sized; `valid`
+// marks the pixels wholly on the quad (row-major), the only ones truth_error counts.
+struct Truth {
+    raster::Image img;
+    std::vector<char> valid;
+};
+Truth bilinear_truth(const Panel& p);
+// The mean absolute channel difference between panel p of `img` and the truth, in levels.
+double truth_error(const raster::Image& img, const Panel& p, const Truth& t);
+// Pixels of panel p of `img` in the wrong light state against a ray cast to the light (the
+// panel's light that casts shadows), and the pixels counted: (wrong, counted).
+std::pair<long long, long long> wrong_light_state(const raster::Image& img, const Panel& p);
 }  // namespace m5cp
