@@ -57,7 +57,8 @@ void textures(fuzz::Input& in) {
         fuzz::broken("m5::wrap_index: outside [0, n - 1] or not a whole number");
 
     m5::Texture t = texture(in);
-    const m5::Level& base = t.levels[0];
+    // A copy: sample() may build the pyramid, and growing t.levels moves level 0.
+    const m5::Level base = t.levels[0];
     const double fi = in.real(), fj = in.real();
     if (std::isfinite(fi) && std::isfinite(fj))
         check_sample(m5::fetch(base, std::floor(fi), std::floor(fj), t.wrap_u, t.wrap_v), "m5::fetch out of range");
