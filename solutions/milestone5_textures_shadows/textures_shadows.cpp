@@ -537,8 +537,8 @@ void fill_snapped(Frame& frame, std::array<const ScreenVertex*, 3> p, std::array
                 if (mip) {
                     ++stats.lod_computed;
                     if (!planes_built) {
-                        auto at = [](m2::Fixed s) { return Vec2{double(s.x) / S, double(s.y) / S}; };
-                        planes = uv_planes({at(f[0]), at(f[1]), at(f[2])}, w, {a0.uv, a1.uv, a2.uv});
+                        auto pixels = [](m2::Fixed s) { return Vec2{double(s.x) / S, double(s.y) / S}; };
+                        planes = uv_planes({pixels(f[0]), pixels(f[1]), pixels(f[2])}, w, {a0.uv, a1.uv, a2.uv});
                         planes_built = true;
                     }
                     lambda = lod(derivatives_at(planes, x + 0.5, y + 0.5), base_width, base_height);
