@@ -449,8 +449,8 @@ std::vector<Scene> build() {
             TextureSpec t = tex(Pattern::kChecker, 16, 16, 4);
             t.a = {240, 120, 60};
             t.b = {30, 90, 200};
-            const Mesh floor = ground(0, 0.8, 3, 150, -200, 0.5);
-            Panel pn = panel(cam({0.03, 0.15, 4}, {0.01, 0.02, -10}, 0.05, 300), {item(floor, unlit(0, filters[p]))}, {t},
+            const Mesh floor = ground(0, 0.8, 3, 150, -200, 1);
+            Panel pn = panel(cam({0.03, 0.5, 4}, {0.01, 0.02, -10}, 0.05, 300), {item(floor, unlit(0, filters[p]))}, {t},
                              128 * p, 0, 128, 64);
             s.panels.push_back(pn);
         }
