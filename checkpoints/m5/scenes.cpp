@@ -449,6 +449,9 @@ std::vector<Scene> build() {
             TextureSpec t = tex(Pattern::kChecker, 16, 16, 4);
             t.a = {240, 120, 60};
             t.b = {30, 90, 200};
+            // Rows at the clamp grow as sqrt(eye height * repeats per unit / pixel angle): at 0.5 above the
+            // floor (a scene seed moves the eye by up to 0.1) and a repeat per unit, about six rows read
+            // the 1x1 level, most of them away from the horizon's edge, where any difference counts.
             const Mesh floor = ground(0, 0.8, 3, 150, -200, 1);
             Panel pn = panel(cam({0.03, 0.5, 4}, {0.01, 0.02, -10}, 0.05, 300), {item(floor, unlit(0, filters[p]))}, {t},
                              128 * p, 0, 128, 64);
