@@ -297,7 +297,7 @@ std::vector<Scene> build() {
     add(numbers("m5.filters", "sample(): nearest, bilinear, nearest-mip and trilinear, lambda clamped",
                 "lambda <= 0 (or NaN) magnifies with bilinear on level 0; else clamp to [0, L - 1]; nearest-mip reads "
                 "level floor(lambda + 0.5); trilinear blends floor(lambda) and the next by the fraction; build the "
-                "pyramid once, only when a level above 0 is needed",
+                "pyramid once, when a level above 0 is read (free where only level 0 is)",
                 {4, 3, 2}, {Group::kFilter}));
     add(numbers("m5.blinn_phong", "Blinn-Phong values: halfway vector, shininess, a light behind",
                 "normalize N, V, L; nothing at all when dot(N, L) <= 0; else base c I + specular max(0, N.H)^s I with "
