@@ -95,13 +95,17 @@
 //    computed only for mip filters, a normal map is read only where a material has one, the
 //    shadow pass runs (and its map is allocated) only for a light that casts shadows, and
 //    shadows are looked up only where c > 0. A fragment hidden behind a nearer one is not
-//    shaded (as in milestone 4). Two counts are LEFT FREE, and both answers pass each:
+//    shaded (as in milestone 4). Three counts are LEFT FREE, and both answers pass each:
 //    (a) where lambda > 0 but only level 0 is read (a 1x1 texture, whose pyramid is itself, or
 //    kNearestMip with lambda < 0.5), building the pyramid (and counting it) or not;
 //    (b) where a triangle's tangent frame is not valid, reading the normal map (and counting it)
-//    or not: perturb_normal does not use the texel there. Neither changes a pixel, and each has
-//    two natural codes (test lambda > 0, or the level to read; read the map and let
-//    perturb_normal ignore it, or skip the read), so the checkpoints accept both.
+//    or not: perturb_normal does not use the texel there;
+//    (c) where uv is NaN or infinite, building the pyramid or not: lambda there comes out NaN
+//    or infinite depending only on how rho is written (std::max's argument order, std::hypot),
+//    and the sample is black either way.
+//    None changes a pixel, and each has two natural codes (test lambda > 0, or the level to
+//    read; read the map and let perturb_normal ignore it, or skip the read), so the
+//    checkpoints accept both.
 //
 //  * Precision. Everything is double until a key or a color is stored. Pictures allow pixels
 //    next to an edge, a shadow boundary or a change of mip level to differ a little, and others

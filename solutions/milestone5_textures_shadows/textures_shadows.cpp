@@ -423,8 +423,8 @@ inline double lit_fraction(const ShadowMap& map, Vec3 p, double c, const ShadowS
     if (!settings.pcf) return lit_at(i, j) ? 1 : 0;
     int count = 0;
     if (i >= 1 && j >= 1 && i + 1 < res && j + 1 < res) {  // all nine inside: no bounds to test
-        for (std::size_t at = static_cast<std::size_t>(j - 1) * width + (i - 1), row_end = at + 3 * width; at < row_end; at += width)
-            count += int(lit(at)) + int(lit(at + 1)) + int(lit(at + 2));
+        std::size_t at = static_cast<std::size_t>(j - 1) * width + static_cast<std::size_t>(i - 1);
+        for (int r = 0; r < 3; ++r, at += width) count += int(lit(at)) + int(lit(at + 1)) + int(lit(at + 2));
     } else {
         for (int dj = -1; dj <= 1; ++dj) {
             for (int di = -1; di <= 1; ++di) count += lit_at(i + di, j + dj) ? 1 : 0;
