@@ -266,7 +266,9 @@ struct ShadowMap {
 };
 // The shadow factor (see Shadows above) at world point p with unit normal n, for a light of
 // direction `direction` whose map is `map`: 1 when lit, 0 when shadowed, the lit fraction of the
-// 3x3 texels with pcf. 1 when dot(n, -direction) <= 0 is never asked (the caller skips it).
+// 3x3 texels with pcf. n is the shading normal, the one blinn_phong gets (after the normal map,
+// if any): the slope bias follows it. fill_triangle never asks where dot(n, -direction) <= 0,
+// so no checkpoint tests the answer there.
 double shadow_factor(const ShadowMap& map, Vec3 p, Vec3 n, Vec3 direction, const ShadowSettings& settings);
 
 // ---- TODO 5 and TODO 9: the textured, lit, shadowed pipeline ----
@@ -338,8 +340,9 @@ struct FillState {
 // from, and level_of_detail on level 0's size, for mip filters only); unlit materials stop
 // there; lit ones normalize the normal, perturb it by the normal map if any (reading the map
 // where state.tangent is not valid is free, see Only what a scene needs above), and add ambient
-// and each light (blinn_phong, times shadow_factor for a light with a map, skipped where
-// dot(N, L) <= 0); then m4::to_color and the depth test m4::depth_passes decide the write.
+// and each light (blinn_phong, times shadow_factor for a light with a map, both with that one
+// normal, skipped where dot(N, L) <= 0); then m4::to_color and the depth test m4::depth_passes
+// decide the write.
 // Counts into stats.
 void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const FillState& state, Stats& stats);
 
