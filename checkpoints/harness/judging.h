@@ -1,0 +1,55 @@
+// Small helpers the milestone judges share (milestones 4 and 5): numbers as findings print them,
+// values read back by key, comparisons within a tolerance, a finding filed under its TODO, the
+// tolerance of a picture with edges, the error of a panel against an exact picture.
+#pragma once
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "harness/checkpoint.h"
+#include "raster/image.h"
+#include "raster/vec.h"
+
+namespace cp {
+
+using Values = std::map<std::string, double>;
+
+// v with 10 significant digits; |v| < 1e-12 prints as 0.
+std::string num(double v);
+// The value stored under key, NaN when there is none.
+double get(const Values& v, const std::string& key);
+// a within tol of b, relative to max(1, |b|); NaN only matches NaN.
+bool close(double a, double b, double tol);
+// The vector stored under key.x, key.y, key.z; "(x, y, z)"; each component close().
+raster::Vec3 vec3(const Values& v, const std::string& key);
+std::string str(raster::Vec3 p);
+bool same3(raster::Vec3 a, raster::Vec3 b, double tol);
+
+// Adds a finding unless one with this topic and text is there: "TODO 5: message" (the label
+// before the first ": ", when it starts with "TODO" and is short) puts "TODO 5" into its todo.
+void add_finding(Judgement& j, const std::string& topic, const std::string& msg);
+
+// Pixels next to an edge or a color boundary of the expected image (a neighbour differs by more
+// than 16 levels in a channel) may differ, up to a fifth of them; elsewhere 3 levels. `why` is
+// printed on failure.
+Tolerance edge_tolerance(const raster::Image& expected, const std::string& why);
+
+// The mean absolute channel difference, in levels, between the rectangle (x0, y0, w, h) of
+// `img` and `truth` (w x h).
+double rect_error(const raster::Image& img, int x0, int y0, int w, int h, const raster::Image& truth);
+
+// Whether a function the reference draws with was called and drew nothing (most often the
+// pipeline's last TODO, not written yet): the harness names it, and every finding about the
+// picture would follow from it.
+bool drew_nothing(const Artifacts& art, const Artifacts& reference);
+
+// "a, b" of the ids, each once, in their first order: the checkpoints a picture's functions pass.
+std::string join_once(const std::vector<std::string>& ids);
+
+// The measures of the counts summed over a scene's panels (yours, the reference's): each that is
+// not zero on either side, as "<name> (reference <theirs>)".
+void report_totals(Judgement& j, const std::map<std::string, std::pair<double, double>>& totals);
+
+}  // namespace cp
