@@ -89,6 +89,38 @@ bool drew_nothing(const Artifacts& art, const Artifacts& reference) {
     return nothing;
 }
 
+void judge_pipeline(Judgement& j, const Artifacts& art, const Artifacts& reference, const raster::Image& expected,
+                    bool has_panels, const std::function<void()>& numbers, const std::function<void()>& picture,
+                    const std::function<std::vector<Finding>()>& prerequisites) {
+    const std::size_t before = j.findings.size();
+    numbers();
+    const bool own_failed = j.findings.size() > before;
+    const bool nothing = drew_nothing(art, reference);
+    if (has_panels && !own_failed && !nothing) picture();
+    bool fails = j.findings.size() > before || (has_panels && nothing);
+    if (!fails && has_panels && !expected.empty()) {
+        const auto it = art.images.find("main");
+        fails = it == art.images.end() || exceeds_tolerance(it->second, expected, j.tolerance);
+    }
+    const std::vector<Finding> first = fails ? prerequisites() : std::vector<Finding>{};
+    if (!first.empty()) {
+        j.findings.resize(before);
+        j.findings.insert(j.findings.end(), first.begin(), first.end());
+    }
+    j.upstream_failed = !first.empty() || (has_panels && own_failed);
+}
+
+std::optional<Finding> prerequisite_finding(
+    const Artifacts& art, const Artifacts& reference, const std::string& prefix, const std::string& checkpoint,
+    const std::function<void(const Values& mine, const Values& ref, Judgement& scratch)>& judge) {
+    const Values mine = values_under(art.values, prefix), ref = values_under(reference.values, prefix);
+    Judgement scratch;
+    judge(mine, ref, scratch);
+    if (scratch.findings.empty()) return std::nullopt;
+    return fix_first(scratch.findings.front(), checkpoint, "this picture is drawn with it",
+                     "this picture cannot come out right before that checkpoint passes");
+}
+
 std::string join_once(const std::vector<std::string>& ids) {
     std::vector<std::string> once;
     for (const std::string& id : ids) {

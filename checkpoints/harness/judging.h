@@ -3,7 +3,9 @@
 // tolerance of a picture with edges, the error of a panel against an exact picture.
 #pragma once
 
+#include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +46,26 @@ double rect_error(const raster::Image& img, int x0, int y0, int w, int h, const 
 // pipeline's last TODO, not written yet): the harness names it, and every finding about the
 // picture would follow from it.
 bool drew_nothing(const Artifacts& art, const Artifacts& reference);
+
+// The verdict of a checkpoint whose pictures are drawn through a pipeline of TODOs (m4, m5),
+// around the milestone's own checks: `numbers` files the findings of the scene's number groups,
+// and `picture` those of its picture, called when there are panels, the numbers pass and no
+// function drew nothing. A checkpoint that fails (a finding of these, a function that drew
+// nothing, or the main image beyond j.tolerance) then calls `prerequisites` for the findings of
+// the functions its panels use, each judged on its own checkpoint's inputs; any there are
+// replace every finding since `numbers` began, and then j.upstream_failed is set (as it is when
+// the numbers of a picture scene fail). A checkpoint that passes stays passed, whatever its
+// prerequisites do.
+void judge_pipeline(Judgement& j, const Artifacts& art, const Artifacts& reference, const raster::Image& expected,
+                    bool has_panels, const std::function<void()>& numbers, const std::function<void()>& picture,
+                    const std::function<std::vector<Finding>()>& prerequisites);
+
+// A prerequisite judged on its own checkpoint's inputs, the values stored under prefix: `judge`
+// files its findings into a scratch judgement. The first of them, told as "fix TODO N first (see
+// <checkpoint>)", or none when it passes.
+std::optional<Finding> prerequisite_finding(
+    const Artifacts& art, const Artifacts& reference, const std::string& prefix, const std::string& checkpoint,
+    const std::function<void(const Values& mine, const Values& ref, Judgement& scratch)>& judge);
 
 // "a, b" of the ids, each once, in their first order: the checkpoints a picture's functions pass.
 std::string join_once(const std::vector<std::string>& ids);

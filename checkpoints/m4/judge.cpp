@@ -940,42 +940,32 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
         c.add("rasterizer", "TODO 8: " + std::to_string(artifacts.stray_writes) +
                                 " write(s) outside the image: clamp the bounding box to the image");
     }
-    const std::size_t before = j.findings.size();
-    for (Group g : s.groups) judge_group(g, c);
-    judge_probes(c);
-    const bool own_failed = j.findings.size() > before;
     // A function the reference draws with that drew nothing (most often draw_mesh, TODO 9, not
     // written yet): the harness names it, and every finding about the picture (counts that
     // blame fill_triangle, keys read back, the scene's theme) would follow from it.
-    const bool drew_nothing = cp::drew_nothing(artifacts, reference);
-    if (!s.panels.empty() && !own_failed && !drew_nothing) judge_picture(c, artifacts, reference, expected);
-    bool fails = j.findings.size() > before || (!s.panels.empty() && drew_nothing);
-    if (!fails && !s.panels.empty() && !expected.empty()) {
-        const auto it = artifacts.images.find("main");
-        fails = it == artifacts.images.end() || cp::exceeds_tolerance(it->second, expected, j.tolerance);
-    }
     // A failing checkpoint first checks the functions of TODOs 1-7 its panels use, on their own
     // checkpoints' inputs. One that is wrong is the finding ("fix TODO 4 first, see
     // m4.normals"), and the picture's findings, which would blame fill_triangle, draw_mesh or
     // the scene's theme for what it did, are left out (and so is the harness's "drew nothing").
     // A checkpoint that passes stays passed, whatever its prerequisites do.
-    std::vector<cp::Finding> first;
-    for (Group g : fails ? prerequisite_groups(s) : std::vector<Group>{}) {
-        const std::string prefix = prerequisite_key(g);
-        const Values mine = cp::values_under(artifacts.values, prefix), ref = cp::values_under(reference.values, prefix);
-        cp::Judgement scratch;
-        Ctx sub{s, mine, ref, scratch};
-        judge_group(g, sub);
-        if (scratch.findings.empty()) continue;
-        first.push_back(cp::fix_first(scratch.findings.front(), prerequisite_checkpoint(g),
-                                      "this picture is drawn with it",
-                                      "this picture cannot come out right before that checkpoint passes"));
-    }
-    if (!first.empty()) {
-        j.findings.resize(before);
-        j.findings.insert(j.findings.end(), first.begin(), first.end());
-    }
-    j.upstream_failed = !first.empty() || (!s.panels.empty() && own_failed);
+    auto numbers = [&] {
+        for (Group g : s.groups) judge_group(g, c);
+        judge_probes(c);
+    };
+    auto prerequisites = [&] {
+        std::vector<cp::Finding> first;
+        for (Group g : prerequisite_groups(s)) {
+            const auto f = cp::prerequisite_finding(artifacts, reference, prerequisite_key(g), prerequisite_checkpoint(g),
+                                                    [&](const Values& mine, const Values& ref, cp::Judgement& scratch) {
+                                                        Ctx sub{s, mine, ref, scratch};
+                                                        judge_group(g, sub);
+                                                    });
+            if (f) first.push_back(*f);
+        }
+        return first;
+    };
+    cp::judge_pipeline(j, artifacts, reference, expected, !s.panels.empty(), numbers,
+                       [&] { judge_picture(c, artifacts, reference, expected); }, prerequisites);
     return j;
 }
 

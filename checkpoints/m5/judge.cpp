@@ -1470,43 +1470,35 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
         c.add("rasterizer", "TODO 5: " + std::to_string(artifacts.stray_writes) +
                                 " write(s) outside the image: clamp the bounding box to the image");
     }
-    const std::size_t before = j.findings.size();
-    for (Group g : s.groups) judge_group(g, c);
-    const bool own_failed = j.findings.size() > before;
     // A function the reference draws with that drew nothing (most often draw_scene, TODO 9, not
     // written yet): the harness names it, and every finding about the picture would follow from it.
-    const bool drew_nothing = cp::drew_nothing(artifacts, reference);
-    if (!s.panels.empty() && !own_failed && !drew_nothing) judge_picture(c, artifacts, reference, expected);
-    bool fails = j.findings.size() > before || (!s.panels.empty() && drew_nothing);
-    if (!fails && !s.panels.empty() && !expected.empty()) {
-        const auto it = artifacts.images.find("main");
-        fails = it == artifacts.images.end() || cp::exceeds_tolerance(it->second, expected, j.tolerance);
-    }
     // A failing picture first checks the functions of TODOs 1-4 and 6-8 its panels use, on their
     // own checkpoints' inputs. One that is wrong is the finding ("fix TODO 3 first, see
     // m5.mipmaps"), and the picture's own findings, which would blame fill_triangle or
     // draw_scene for what it did, are left out. A checkpoint that passes stays passed.
     // A group whose own prerequisite fails is not told (sample() is wrong when fetch is).
-    std::vector<cp::Finding> first;
-    std::set<Group> failed;
-    for (Group g : fails ? prerequisite_groups(s) : std::vector<Group>{}) {
-        const std::string prefix = prerequisite_key(g);
-        const Values mine = cp::values_under(artifacts.values, prefix), ref = cp::values_under(reference.values, prefix);
-        cp::Judgement scratch;
-        Ctx sub{s, mine, ref, scratch};
-        judge_group(g, sub);
-        if (scratch.findings.empty()) continue;
-        failed.insert(g);
-        const auto deps = group_dependencies(g);
-        if (std::any_of(deps.begin(), deps.end(), [&failed](Group d) { return failed.count(d) > 0; })) continue;
-        first.push_back(cp::fix_first(scratch.findings.front(), prerequisite_checkpoint(g), "this picture is drawn with it",
-                                      "this picture cannot come out right before that checkpoint passes"));
-    }
-    if (!first.empty()) {
-        j.findings.resize(before);
-        j.findings.insert(j.findings.end(), first.begin(), first.end());
-    }
-    j.upstream_failed = !first.empty() || (!s.panels.empty() && own_failed);
+    auto prerequisites = [&] {
+        std::vector<cp::Finding> first;
+        std::set<Group> failed;
+        for (Group g : prerequisite_groups(s)) {
+            const auto f = cp::prerequisite_finding(artifacts, reference, prerequisite_key(g), prerequisite_checkpoint(g),
+                                                    [&](const Values& mine, const Values& ref, cp::Judgement& scratch) {
+                                                        Ctx sub{s, mine, ref, scratch};
+                                                        judge_group(g, sub);
+                                                    });
+            if (!f) continue;
+            failed.insert(g);
+            const auto deps = group_dependencies(g);
+            if (std::any_of(deps.begin(), deps.end(), [&failed](Group d) { return failed.count(d) > 0; })) continue;
+            first.push_back(*f);
+        }
+        return first;
+    };
+    auto numbers = [&] {
+        for (Group g : s.groups) judge_group(g, c);
+    };
+    cp::judge_pipeline(j, artifacts, reference, expected, !s.panels.empty(), numbers,
+                       [&] { judge_picture(c, artifacts, reference, expected); }, prerequisites);
     return j;
 }
 
