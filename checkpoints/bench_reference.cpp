@@ -28,8 +28,6 @@
 #include <string>
 #include <vector>
 
-#include <time.h>
-
 #include "harness/bench_build.h"
 #include "harness/checkpoint.h"
 #include "lines.h"
@@ -66,12 +64,6 @@ long long lit_pixels(const Image& img) {
 
 void report(const char* what, double seconds, long long items, const char* unit) {
     std::printf("%-58s %9.3f ms %10.1f ns per %s\n", what, seconds * 1e3, seconds * 1e9 / double(items), unit);
-}
-
-double cpu_now() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 // ---- the naive methods ----
@@ -185,22 +177,6 @@ struct Comparison {
     long long differing = 0;  // pixels where the two images differ by more than 1 level
 };
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
-long long differing_pixels(const Image& a, const Image& b) {
-    long long n = 0;
-    for (std::size_t i = 0; i < a.size_bytes(); i += 3) {
-        bool differ = false;
-        for (int k = 0; k < 3; ++k) differ |= std::abs(int(a.data()[i + k]) - int(b.data()[i + k])) > 1;
-        n += differ;
-    }
-    return n;
-}
-
 // Each round clears an image and draws the whole input with the reference, then with the
 // naive method (the order alternates between rounds).
 Comparison compare(const std::string& what, long long items, const char* unit, const std::function<void(Image&)>& reference,
@@ -212,9 +188,9 @@ Comparison compare(const std::string& what, long long items, const char* unit, c
     std::vector<double> tr, tn, ratio;
     auto timed = [](Image& img, const std::function<void(Image&)>& fn) {
         img.fill(raster::colors::black);
-        const double start = cpu_now();
+        const double start = bench::cpu_now();
         fn(img);
-        return cpu_now() - start;
+        return bench::cpu_now() - start;
     };
     for (int r = 0; r < rounds; ++r) {
         double a, b;
@@ -232,12 +208,12 @@ Comparison compare(const std::string& what, long long items, const char* unit, c
     c.what = what;
     c.items = items;
     c.unit = unit;
-    c.reference = median(tr);
-    c.naive = median(tn);
-    c.ratio = median(ratio);
+    c.reference = bench::median(tr);
+    c.naive = bench::median(tn);
+    c.ratio = bench::median(ratio);
     c.ratio_lo = *std::min_element(ratio.begin(), ratio.end());
     c.ratio_hi = *std::max_element(ratio.begin(), ratio.end());
-    c.differing = differing_pixels(ref_img, naive_img);
+    c.differing = bench::differing_pixels(ref_img, naive_img);
     std::printf("%-52s reference %8.1f ns, naive %8.1f ns per %s: %5.2fx (rounds %.2f to %.2f)%s\n", what.c_str(),
                 c.reference * 1e9 / double(items), c.naive * 1e9 / double(items), unit, c.ratio, c.ratio_lo, c.ratio_hi,
                 c.ratio >= 2 ? "" : "  below 2x");

@@ -68,8 +68,9 @@ double level_of_detail(const UvDerivatives& d, int width, int height) {
 
 Vec3 sample(Texture& texture, Vec2 uv, double lambda, Filter filter, long long* mipmap_builds) {
     // TODO 4c: kNearest and kBilinear read level 0; the mip filters magnify with bilinear on
-    // level 0 when lambda <= 0 (or NaN), else build the pyramid if there is none (count it),
-    // clamp lambda to the last level and read one level (kNearestMip) or blend two.
+    // level 0 when lambda <= 0 (or NaN), else build the pyramid if there is none (count it;
+    // free where only level 0 is read, see the header), clamp lambda to the last level and read
+    // one level (kNearestMip) or blend two.
     return {};
 }
 
@@ -117,8 +118,8 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
     // TODO 5: milestone 4's fill_triangle with a new fragment: depth pre-test first (a hidden
     // fragment costs nothing), then perspective-correct uv, normal and world position, the
     // base color (color or sample(), lambda only for mip filters), and for lit materials the
-    // normal map, ambient and every light (blinn_phong, shadow_factor); then to_color and the
-    // depth test. Count what you do in stats.
+    // normal map (reading it where state.tangent is not valid is free), ambient and every light
+    // (blinn_phong, shadow_factor); then to_color and the depth test. Count what you do in stats.
 }
 
 // ---- TODO 9: the pipeline ----

@@ -23,8 +23,6 @@
 #include <string>
 #include <vector>
 
-#include <time.h>
-
 #include "depth_lighting.h"
 #include "harness/bench_build.h"
 #include "harness/checkpoint.h"
@@ -52,25 +50,11 @@ Scene make_scene(int segments) {
     return sc;
 }
 
-// The best of g_runs runs, in this thread's CPU time: on a shared machine, wall time would also
-// count the time other processes held the core. main() times the three renderers in
-// alternating rounds of one run each and reports medians and the spread of the ratios.
+// How many runs best_cpu_seconds takes the best of (1: main() alternates rounds of one run).
 int g_runs = 1;
 template <class F>
 double best_cpu_seconds(F&& fn) {
-    auto now = [] {
-        timespec ts{};
-        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-        return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-    };
-    double best = 0;
-    for (int run = 0; run < g_runs; ++run) {
-        const double start = now();
-        fn();
-        const double t = now() - start;
-        best = run == 0 ? t : std::min(best, t);
-    }
-    return best;
+    return bench::best_cpu_seconds(fn, g_runs);
 }
 
 struct Result {
@@ -259,12 +243,6 @@ Result run_tutorial(const Scene& sc) {
 }
 
 // Memory bandwidth: the best of a few copies of a 256 MB buffer (bytes read plus written).
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
 double bandwidth_bytes_per_second() {
     const std::size_t n = std::size_t(256) << 20;
     std::vector<char> a(n, 1), b(n, 2);
@@ -320,11 +298,11 @@ int main(int argc, char** argv) {
             speedups.push_back(tutorial.seconds / ref.seconds);
             over_leans.push_back(lean.seconds / ref.seconds);
         }
-        ref.seconds = median(tr);
-        tutorial.seconds = median(tt);
-        lean.seconds = median(tl);
+        ref.seconds = bench::median(tr);
+        tutorial.seconds = bench::median(tt);
+        lean.seconds = bench::median(tl);
         const double tris = double(sc.mesh.triangles.size());
-        const double speedup = median(speedups), over_lean = median(over_leans);
+        const double speedup = bench::median(speedups), over_lean = bench::median(over_leans);
         const double lo = *std::min_element(speedups.begin(), speedups.end());
         const double hi = *std::max_element(speedups.begin(), speedups.end());
         // The pixel memory a frame moves: clearing every pixel (3 bytes of color, 4 of depth),

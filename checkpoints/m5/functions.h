@@ -49,7 +49,7 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"filter", {"TODO 4", "lambda <= 0 or NaN: bilinear on level 0; else clamp to [0, L - 1]; nearest-mip level floor(lambda + 0.5)"}},
         {"lambda clamp", {"TODO 4", "clamp lambda to [0, L - 1]: never read past the 1x1 level"}},
         {"trilinear", {"TODO 4", "blend the bilinear samples of levels floor(lambda) and floor(lambda) + 1 by the fraction of lambda"}},
-        {"mipmap builds", {"TODO 4", "build the pyramid once, the first time a mip filter needs a level above 0"}},
+        {"mipmap builds", {"TODO 4", "build the pyramid once, the first time a mip filter reads a level above 0; never for lambda <= 0"}},
         {"perspective uv", {"TODO 5", "interpolate u/w, v/w and 1/w on the screen (m4::perspective_weights), in double"}},
         {"rasterizer", {"TODO 5", "milestone 2's snapping, edge functions and top-left rule; depth pre-test before shading"}},
         {"specular", {"TODO 6", "base c I + specular max(0, N.H)^shininess I with H = normalize(L + V)"}},

@@ -274,7 +274,7 @@ std::vector<Scene> build() {
     add(numbers("m5.filters", "sample(): nearest, bilinear, nearest-mip and trilinear, lambda clamped",
                 "lambda <= 0 (or NaN) magnifies with bilinear on level 0; else clamp to [0, L - 1]; nearest-mip reads "
                 "level floor(lambda + 0.5); trilinear blends floor(lambda) and the next by the fraction; build the "
-                "pyramid once, only when a level above 0 is needed",
+                "pyramid once, when a level above 0 is read (free where only level 0 is)",
                 {4, 3, 2}, {Group::kFilter}));
     add(numbers("m5.blinn_phong", "Blinn-Phong values: halfway vector, shininess, a light behind",
                 "normalize N, V, L; nothing at all when dot(N, L) <= 0; else base c I + specular max(0, N.H)^s I with "
@@ -426,8 +426,11 @@ std::vector<Scene> build() {
             TextureSpec t = tex(Pattern::kChecker, 16, 16, 4);
             t.a = {240, 120, 60};
             t.b = {30, 90, 200};
-            const Mesh floor = ground(0, 0.8, 3, 150, -200, 0.5);
-            Panel pn = panel(cam({0.03, 0.15, 4}, {0.01, 0.02, -10}, 0.05, 300), {item(floor, unlit(0, filters[p]))}, {t},
+            // Rows at the clamp grow as sqrt(eye height * repeats per unit / pixel angle): at 0.5 above the
+            // floor (a scene seed moves the eye by up to 0.1) and a repeat per unit, about six rows read
+            // the 1x1 level, most of them away from the horizon's edge, where any difference counts.
+            const Mesh floor = ground(0, 0.8, 3, 150, -200, 1);
+            Panel pn = panel(cam({0.03, 0.5, 4}, {0.01, 0.02, -10}, 0.05, 300), {item(floor, unlit(0, filters[p]))}, {t},
                              128 * p, 0, 128, 64);
             s.panels.push_back(pn);
         }

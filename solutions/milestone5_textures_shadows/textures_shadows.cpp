@@ -63,6 +63,26 @@ inline const Vec3& texel_at(const Level& level, double i, double j) {
     return level.texels[static_cast<std::size_t>(j) * static_cast<std::size_t>(level.width) + static_cast<std::size_t>(i)];
 }
 
+// The index after a wrapped one: for repeat simply the next (or 0 past the end), one wrap
+// instead of two; clamp and mirror may turn back, so they wrap i + 1 themselves.
+inline double next_wrapped(double i, double wrapped_i, int n, Wrap mode) {
+    if (mode == Wrap::kRepeat) return wrapped_i + 1 < n ? wrapped_i + 1 : 0;
+    return wrapped(i + 1, n, mode);
+}
+
+// sample_bilinear's body, inline: the hot path of every filtered sample (trilinear reads two).
+inline Vec3 bilinear(const Level& level, Vec2 uv, Wrap wrap_u, Wrap wrap_v) {
+    if (!has_texels(level)) return {};
+    const double x = uv.x * level.width - 0.5, y = uv.y * level.height - 0.5;
+    if (!std::isfinite(x) || !std::isfinite(y)) return {};
+    const double i = std::floor(x), j = std::floor(y);
+    const double a = x - i, b = y - j;
+    const double i0 = wrapped(i, level.width, wrap_u), i1 = next_wrapped(i, i0, level.width, wrap_u);
+    const double j0 = wrapped(j, level.height, wrap_v), j1 = next_wrapped(j, j0, level.height, wrap_v);
+    return texel_at(level, i0, j0) * ((1 - a) * (1 - b)) + texel_at(level, i1, j0) * (a * (1 - b)) +
+           texel_at(level, i0, j1) * ((1 - a) * b) + texel_at(level, i1, j1) * (a * b);
+}
+
 }  // namespace
 // END SOLUTION
 
@@ -103,16 +123,7 @@ Vec3 sample_bilinear(const Level& level, Vec2 uv, Wrap wrap_u, Wrap wrap_v) {
     // TODO 2b: texel centers are at half-integers: shift by 0.5 before taking floor and
     // fraction, then blend the four texels around the point (each index wrapped).
     // BEGIN SOLUTION
-    if (!has_texels(level)) return {};
-    const double x = uv.x * level.width - 0.5, y = uv.y * level.height - 0.5;
-    if (!std::isfinite(x) || !std::isfinite(y)) return {};
-    const double i = std::floor(x), j = std::floor(y);
-    const double a = x - i, b = y - j;
-    // Four wraps instead of eight: the two columns and the two rows, each once.
-    const double i0 = wrapped(i, level.width, wrap_u), i1 = wrapped(i + 1, level.width, wrap_u);
-    const double j0 = wrapped(j, level.height, wrap_v), j1 = wrapped(j + 1, level.height, wrap_v);
-    return texel_at(level, i0, j0) * ((1 - a) * (1 - b)) + texel_at(level, i1, j0) * (a * (1 - b)) +
-           texel_at(level, i0, j1) * ((1 - a) * b) + texel_at(level, i1, j1) * (a * b);
+    return bilinear(level, uv, wrap_u, wrap_v);
     // SKELETON: return {};
     // END SOLUTION
 }
@@ -201,8 +212,17 @@ UvPlanes uv_planes(const std::array<Vec2, 3>& p, const std::array<double, 3>& w,
     return planes;
 }
 
+// lambda = log2(rho) = log2(max(rho_x^2, rho_y^2)) / 2: one logarithm and no square root.
+// (Squaring first overflows or underflows exactly where the square roots' arguments would.)
+inline double lod(const UvDerivatives& d, int width, int height) {
+    const double ux = width * d.du_dx, vx = height * d.dv_dx, uy = width * d.du_dy, vy = height * d.dv_dy;
+    const double rx2 = ux * ux + vx * vx, ry2 = uy * uy + vy * vy;
+    if (std::isnan(rx2) || std::isnan(ry2)) return std::numeric_limits<double>::quiet_NaN();
+    return 0.5 * std::log2(std::max(rx2, ry2));  // log2(0) is -infinity
+}
+
 // The quotient rule at (x, y): du/dx = (U_x Q - U Q_x) / Q^2, and likewise (u = u0 + U / Q).
-UvDerivatives derivatives_at(const UvPlanes& planes, double x, double y) {
+inline UvDerivatives derivatives_at(const UvPlanes& planes, double x, double y) {
     if (!planes.valid) return {};
     const double dx = x - planes.x0, dy = y - planes.y0;
     const double q = planes.q + planes.q_x * dx + planes.q_y * dy;
@@ -234,23 +254,21 @@ UvDerivatives uv_derivatives(const std::array<Vec3, 3>& screen, const std::array
 double level_of_detail(const UvDerivatives& d, int width, int height) {
     // TODO 4b: rho from the derivatives in TEXELS (times width and height), lambda = log2(rho).
     // BEGIN SOLUTION
-    const double ux = width * d.du_dx, vx = height * d.dv_dx, uy = width * d.du_dy, vy = height * d.dv_dy;
-    const double rx = std::sqrt(ux * ux + vx * vx), ry = std::sqrt(uy * uy + vy * vy);
-    if (std::isnan(rx) || std::isnan(ry)) return std::numeric_limits<double>::quiet_NaN();
-    return std::log2(std::max(rx, ry));  // log2(0) is -infinity
+    return lod(d, width, height);
     // SKELETON: return 0;
     // END SOLUTION
 }
 
 Vec3 sample(Texture& texture, Vec2 uv, double lambda, Filter filter, long long* mipmap_builds) {
     // TODO 4c: kNearest and kBilinear read level 0; the mip filters magnify with bilinear on
-    // level 0 when lambda <= 0 (or NaN), else build the pyramid if there is none (count it),
-    // clamp lambda to the last level and read one level (kNearestMip) or blend two.
+    // level 0 when lambda <= 0 (or NaN), else build the pyramid if there is none (count it;
+    // free where only level 0 is read, see the header), clamp lambda to the last level and read
+    // one level (kNearestMip) or blend two.
     // BEGIN SOLUTION
     if (texture.levels.empty() || !has_texels(texture.levels[0])) return {};
     if (filter == Filter::kNearest) return sample_nearest(texture.levels[0], uv, texture.wrap_u, texture.wrap_v);
     const bool mip = filter == Filter::kNearestMip || filter == Filter::kTrilinear;
-    if (!mip || !(lambda > 0)) return sample_bilinear(texture.levels[0], uv, texture.wrap_u, texture.wrap_v);
+    if (!mip || !(lambda > 0)) return bilinear(texture.levels[0], uv, texture.wrap_u, texture.wrap_v);
     if (!texture.mipmapped) {
         build_mipmaps(texture);
         if (mipmap_builds) ++*mipmap_builds;
@@ -259,13 +277,13 @@ Vec3 sample(Texture& texture, Vec2 uv, double lambda, Filter filter, long long* 
     const double clamped = std::min(lambda, static_cast<double>(last));  // > 0, at most last
     if (filter == Filter::kNearestMip) {
         const auto k = static_cast<std::size_t>(std::floor(clamped + 0.5));
-        return sample_bilinear(texture.levels[k], uv, texture.wrap_u, texture.wrap_v);
+        return bilinear(texture.levels[k], uv, texture.wrap_u, texture.wrap_v);
     }
     const auto k = static_cast<std::size_t>(std::floor(clamped));
     const double fraction = clamped - static_cast<double>(k);
-    const Vec3 lower = sample_bilinear(texture.levels[k], uv, texture.wrap_u, texture.wrap_v);
+    const Vec3 lower = bilinear(texture.levels[k], uv, texture.wrap_u, texture.wrap_v);
     if (k == last || fraction == 0) return lower;  // no next level, or none needed
-    const Vec3 upper = sample_bilinear(texture.levels[k + 1], uv, texture.wrap_u, texture.wrap_v);
+    const Vec3 upper = bilinear(texture.levels[k + 1], uv, texture.wrap_u, texture.wrap_v);
     return lower * (1 - fraction) + upper * fraction;
     // SKELETON: return {};
     // END SOLUTION
@@ -285,6 +303,29 @@ inline Vec3 unit_or_zero(Vec3 v) {
 
 inline Vec3 times(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 
+// x^s: a whole-number exponent up to 1024 (the usual shininess) by repeated squaring, a few
+// multiplications instead of std::pow's logarithm and exponential; any other by std::pow.
+inline double power(double x, double s) {
+    if (!(s >= 0 && s <= 1024 && s == std::floor(s))) return std::pow(x, s);
+    double result = 1;
+    for (unsigned e = static_cast<unsigned>(s); e != 0; e >>= 1, x *= x) {
+        if (e & 1u) result *= x;
+    }
+    return result;
+}
+
+// blinn_phong's body for n, v and l already unit (or zero), with c = dot(n, l) > 0 known:
+// fill_triangle normalizes each of them once per fragment, not once per light.
+inline Vec3 lit_by(Vec3 base, Vec3 specular, double shininess, Vec3 n, Vec3 v, Vec3 l, double c, Vec3 intensity) {
+    Vec3 levels = times(base, intensity) * c;
+    if (!(specular == Vec3{})) {
+        const Vec3 h = unit_or_zero(l + v);
+        const double s = power(std::max(0.0, raster::dot(n, h)), shininess);
+        if (s > 0) levels = levels + times(specular, intensity) * s;  // s = 0: nothing (even for I = inf)
+    }
+    return levels;
+}
+
 }  // namespace
 // END SOLUTION
 
@@ -296,13 +337,7 @@ Vec3 blinn_phong(Vec3 base, Vec3 specular, double shininess, Vec3 normal, Vec3 t
     const double c = raster::dot(n, l);
     // A light behind the surface adds nothing; a zero N, L (so c = 0) or V adds nothing either.
     if (!(c > 0) || v == Vec3{}) return {};
-    Vec3 levels = times(base, intensity) * c;
-    if (!(specular == Vec3{})) {
-        const Vec3 h = unit_or_zero(l + v);
-        const double s = std::pow(std::max(0.0, raster::dot(n, h)), shininess);
-        if (s > 0) levels = levels + times(specular, intensity) * s;  // s = 0: nothing (even for I = inf)
-    }
-    return levels;
+    return lit_by(base, specular, shininess, n, v, l, c, intensity);
     // SKELETON: return {};
     // END SOLUTION
 }
@@ -357,58 +392,73 @@ Mat4 light_view_projection(Vec3 direction, const ShadowSettings& settings) {
     // END SOLUTION
 }
 
+// BEGIN SOLUTION
+namespace {
+
+// shadow_factor's body, inline, with c = dot(n, L) given (fill_triangle has it already).
+inline double lit_fraction(const ShadowMap& map, Vec3 p, double c, const ShadowSettings& settings) {
+    const int res = map.resolution;
+    if (res < 1 || map.keys.size() != static_cast<std::size_t>(res) * static_cast<std::size_t>(res)) return 1;
+    // m3::to_screen(map.light * point(p), res, res), written out: this runs per fragment.
+    const auto& m = map.light.m;
+    const double cx = m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3];
+    const double cy = m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3];
+    const double cz = m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3];
+    const double cw = m[3][0] * p.x + m[3][1] * p.y + m[3][2] * p.z + m[3][3];
+    const Vec3 s{(cx / cw + 1) / 2 * res, (1 - cy / cw) / 2 * res, cz / cw};
+    const double column = std::floor(s.x), row = std::floor(s.y);
+    // Every texel of the 3x3 outside the map (or no position at all: NaN): lit. What passes
+    // this test converts to int safely.
+    if (!(column >= -1 && column <= res && row >= -1 && row <= res)) return 1;
+    constexpr double kMaxSlope = 10;
+    const double tan_theta = c > 0 ? std::sqrt(std::max(0.0, 1 - c * c)) / c : kMaxSlope;
+    const double bias = settings.constant_bias + settings.slope_bias * std::min(tan_theta, kMaxSlope);
+    const double depth = (s.z + 1) / 2 - bias / (2 * map.radius);
+    // Lit unless the stored depth is nearer. kClearKey is a NaN as a float, so nothing drawn
+    // there compares as lit without a test of its own; a NaN depth is lit too.
+    auto lit = [&](std::size_t at) { return !(depth > static_cast<double>(std::bit_cast<float>(map.keys[at]))); };
+    const int i = static_cast<int>(column), j = static_cast<int>(row);
+    const std::size_t width = static_cast<std::size_t>(res);
+    auto lit_at = [&](int ii, int jj) { return ii < 0 || jj < 0 || ii >= res || jj >= res || lit(static_cast<std::size_t>(jj) * width + ii); };
+    if (!settings.pcf) return lit_at(i, j) ? 1 : 0;
+    int count = 0;
+    if (i >= 1 && j >= 1 && i + 1 < res && j + 1 < res) {  // all nine inside: no bounds to test
+        for (std::size_t at = static_cast<std::size_t>(j - 1) * width + (i - 1), row_end = at + 3 * width; at < row_end; at += width)
+            count += int(lit(at)) + int(lit(at + 1)) + int(lit(at + 2));
+    } else {
+        for (int dj = -1; dj <= 1; ++dj) {
+            for (int di = -1; di <= 1; ++di) count += lit_at(i + di, j + dj) ? 1 : 0;
+        }
+    }
+    return count / 9.0;
+}
+
+}  // namespace
+// END SOLUTION
+
 double shadow_factor(const ShadowMap& map, Vec3 p, Vec3 n, Vec3 direction, const ShadowSettings& settings) {
     // TODO 8b: p to the map's texel and depth d (m3::to_screen of map.light); the bias in world
     // units to depth units (divide by 2r); compare with the stored depth (the float of the key)
     // at one texel, or count the lit ones of the 3x3 around it with PCF.
     // BEGIN SOLUTION
-    const int res = map.resolution;
-    if (res < 1 || map.keys.size() != static_cast<std::size_t>(res) * static_cast<std::size_t>(res)) return 1;
-    const Vec3 s = m3::to_screen(map.light * raster::point(p), res, res);
-    const double column = std::floor(s.x), row = std::floor(s.y);
-    // Every texel of the 3x3 outside the map (or no position at all: NaN): lit. What passes
-    // this test converts to int safely.
-    if (!(column >= -1 && column <= res && row >= -1 && row <= res)) return 1;
-    const Vec3 l = unit_or_zero(-direction);
-    const double c = raster::dot(n, l);
-    constexpr double kMaxSlope = 10;
-    const double tan_theta = c > 0 ? std::sqrt(std::max(0.0, 1 - c * c)) / c : kMaxSlope;
-    const double bias = settings.constant_bias + settings.slope_bias * std::min(tan_theta, kMaxSlope);
-    const double depth = (s.z + 1) / 2 - bias / (2 * map.radius);
-    auto lit = [&](int i, int j) {
-        if (i < 0 || j < 0 || i >= res || j >= res) return true;
-        const std::uint32_t key = map.keys[static_cast<std::size_t>(j) * res + i];
-        if (key == m4::kClearKey) return true;
-        return !(depth > static_cast<double>(std::bit_cast<float>(key)));  // NaN: lit
-    };
-    const int i = static_cast<int>(column), j = static_cast<int>(row);
-    if (!settings.pcf) return lit(i, j) ? 1 : 0;
-    int count = 0;
-    for (int dj = -1; dj <= 1; ++dj) {
-        for (int di = -1; di <= 1; ++di) count += lit(i + di, j + dj) ? 1 : 0;
-    }
-    return count / 9.0;
+    return lit_fraction(map, p, raster::dot(n, unit_or_zero(-direction)), settings);
     // SKELETON: return 1;
     // END SOLUTION
 }
 
 // ---- TODO 5: the textured, lit, shadowed triangle ----
 
-void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const FillState& state, Stats& stats) {
-    // TODO 5: milestone 4's fill_triangle with a new fragment: depth pre-test first (a hidden
-    // fragment costs nothing), then perspective-correct uv, normal and world position, the
-    // base color (color or sample(), lambda only for mip filters), and for lit materials the
-    // normal map, ambient and every light (blinn_phong, shadow_factor); then to_color and the
-    // depth test. Count what you do in stats.
-    // BEGIN SOLUTION
+// BEGIN SOLUTION
+namespace {
+
+// fill_triangle's work, from vertices already snapped: draw_scene snaps every position once
+// (as milestone 4's draw_mesh does) rather than once per triangle that uses it, and passes
+// pointers rather than copies of three vertices of fifteen doubles each.
+void fill_snapped(Frame& frame, std::array<const ScreenVertex*, 3> p, std::array<m2::Fixed, 3> f, const FillState& state,
+                  Stats& stats) {
     Image& img = frame.color;
     const int width = img.width(), height = img.height();
     if (!state.material || frame.depth.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) return;
-    std::array<m2::Fixed, 3> f;
-    for (int i = 0; i < 3; ++i) {
-        if (!m2::snap({v[i].screen.x, v[i].screen.y}, f[i])) return;
-    }
-    std::array<const ScreenVertex*, 3> p = {&v[0], &v[1], &v[2]};
     std::int64_t area2 = m2::edge(f[0], f[1], f[2]);
     if (area2 == 0) return;
     if (area2 < 0) {  // counter-clockwise on the screen, the whole vertex moving with its point
@@ -448,13 +498,15 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
     static const ShadowSettings kDefaultShadows;
     const ShadowSettings& shadow_settings = state.shadow_settings ? *state.shadow_settings : kDefaultShadows;
     const std::array<double, 3> w = {a0.w, a1.w, a2.w};
+    // Built at the first fragment that needs them: most triangles of a fine mesh cover no
+    // pixel center at all.
     UvPlanes planes;
-    if (mip) {
-        auto at = [](m2::Fixed s) { return Vec2{double(s.x) / S, double(s.y) / S}; };
-        planes = uv_planes({at(f[0]), at(f[1]), at(f[2])}, w, {a0.uv, a1.uv, a2.uv});
-    }
+    bool planes_built = false;
     const Vec3 plain{double(material.color.r), double(material.color.g), double(material.color.b)};
     const double inv_area = 1.0 / static_cast<double>(area2);
+    // 1 / w_i once per triangle: the perspective-correct weights (m4::perspective_weights)
+    // then cost one division per fragment instead of four.
+    const double iw0 = 1 / a0.w, iw1 = 1 / a1.w, iw2 = 1 / a2.w;
     std::uint32_t* const depth = frame.depth.data();
     long long fragments = 0, shaded = 0;
 
@@ -470,7 +522,14 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
             const std::uint32_t key = m4::depth_key(m4::DepthFormat::kFloatZ, z, 1);
             if (key == m4::kClearKey || key > depth[at]) continue;
             ++shaded;
-            const std::array<double, 3> pw = m4::perspective_weights({l0, l1, l2}, w);
+            std::array<double, 3> pw = {l0 * iw0, l1 * iw1, l2 * iw2};
+            const double sum = pw[0] + pw[1] + pw[2];
+            if (sum > 0 && std::isfinite(sum)) {
+                const double inv_sum = 1 / sum;
+                pw = {pw[0] * inv_sum, pw[1] * inv_sum, pw[2] * inv_sum};
+            } else {
+                pw = {l0, l1, l2};  // as m4::perspective_weights: the screen weights
+            }
             const Vec2 uv = need_uv ? a0.uv * pw[0] + a1.uv * pw[1] + a2.uv * pw[2] : Vec2{};
 
             Vec3 base = plain;
@@ -478,7 +537,12 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
                 double lambda = 0;
                 if (mip) {
                     ++stats.lod_computed;
-                    lambda = level_of_detail(derivatives_at(planes, x + 0.5, y + 0.5), base_width, base_height);
+                    if (!planes_built) {
+                        auto pixels = [](m2::Fixed s) { return Vec2{double(s.x) / S, double(s.y) / S}; };
+                        planes = uv_planes({pixels(f[0]), pixels(f[1]), pixels(f[2])}, w, {a0.uv, a1.uv, a2.uv});
+                        planes_built = true;
+                    }
+                    lambda = lod(derivatives_at(planes, x + 0.5, y + 0.5), base_width, base_height);
                 }
                 ++stats.texture_samples;
                 base = sample(*texture, uv, lambda, material.filter, &stats.mipmap_builds);
@@ -491,21 +555,25 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
                     n = perturb_normal(state.tangent, n, sample_bilinear(normal_level, uv, normal_map->wrap_u, normal_map->wrap_v));
                 }
                 const Vec3 world = a0.world * pw[0] + a1.world * pw[1] + a2.world * pw[2];
+                const Vec3 to_eye = unit_or_zero(state.eye - world);  // once for all lights
                 const Lighting& lighting = *state.lighting;
                 levels = times(base, lighting.ambient);
                 for (std::size_t k = 0; k < lighting.lights.size(); ++k) {
                     const Light& light = lighting.lights[k];
                     const Vec3 to_light = unit_or_zero(-light.direction);
-                    if (!(raster::dot(n, to_light) > 0)) continue;  // no light, no shadow lookup
+                    const double c = raster::dot(n, to_light);
+                    if (!(c > 0)) continue;  // no light, no shadow lookup
                     double factor = 1;
                     const ShadowMap* map = state.shadow_maps && k < state.shadow_maps->size() ? (*state.shadow_maps)[k] : nullptr;
                     if (map) {
                         ++stats.shadow_lookups;
-                        factor = shadow_factor(*map, world, n, light.direction, shadow_settings);
+                        factor = lit_fraction(*map, world, c, shadow_settings);
                     }
                     if (has_specular) ++stats.specular_terms;
-                    const Vec3 term = blinn_phong(base, material.specular, material.shininess, n, state.eye - world, to_light, light.intensity);
-                    if (factor > 0) levels = levels + term * factor;  // 0 * an infinite light would be NaN
+                    // blinn_phong(), with N, V and L normalized once; 0 * an infinite light would be NaN
+                    if (factor > 0 && !(to_eye == Vec3{})) {
+                        levels = levels + lit_by(base, material.specular, material.shininess, n, to_eye, to_light, c, light.intensity) * factor;
+                    }
                 }
             }
             const Color c = m4::to_color(levels);
@@ -518,6 +586,23 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
     }
     stats.fragments += fragments;
     stats.shaded += shaded;
+}
+
+}  // namespace
+// END SOLUTION
+
+void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const FillState& state, Stats& stats) {
+    // TODO 5: milestone 4's fill_triangle with a new fragment: depth pre-test first (a hidden
+    // fragment costs nothing), then perspective-correct uv, normal and world position, the
+    // base color (color or sample(), lambda only for mip filters), and for lit materials the
+    // normal map (reading it where state.tangent is not valid is free), ambient and every light
+    // (blinn_phong, shadow_factor); then to_color and the depth test. Count what you do in stats.
+    // BEGIN SOLUTION
+    std::array<m2::Fixed, 3> f;
+    for (int i = 0; i < 3; ++i) {
+        if (!m2::snap({v[i].screen.x, v[i].screen.y}, f[i])) return;
+    }
+    fill_snapped(frame, {&v[0], &v[1], &v[2]}, f, state, stats);
     // END SOLUTION
 }
 
@@ -532,14 +617,19 @@ bool inside(Vec4 c) {
 
 bool finite(Vec4 c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w); }
 
-// The depth pass of one light: every object that casts a shadow, depth only, both faces.
-ShadowMap shadow_pass(const std::vector<Object>& objects, Vec3 direction, const ShadowSettings& settings) {
-    ShadowMap map;
+// The depth pass of one light into `map`: every object that casts a shadow, depth only, both
+// faces. The map's keys and the pass's color image keep their memory from the frame before
+// (a map of 1024^2 keys is 4 MB: allocating and zeroing it anew each frame costs more than
+// drawing the floor into it).
+void shadow_pass(const std::vector<Object>& objects, Vec3 direction, const ShadowSettings& settings, ShadowMap& map) {
     map.light = light_view_projection(direction, settings);
     map.radius = settings.radius;
     map.resolution = settings.resolution;
-    Frame pass;
-    pass.color = Image(settings.resolution, settings.resolution);
+    thread_local Frame pass;
+    if (pass.color.width() != settings.resolution || pass.color.height() != settings.resolution) {
+        pass.color = Image(settings.resolution, settings.resolution);
+    }
+    pass.depth = std::move(map.keys);
     m4::clear_frame(pass, raster::colors::black, true, m4::DepthFormat::kFloatZ);
     m4::Needs needs;
     needs.depth_test = true;
@@ -551,7 +641,6 @@ ShadowMap shadow_pass(const std::vector<Object>& objects, Vec3 direction, const 
         m4::draw_mesh(pass, *object.mesh, object.model, map.light, m3::identity(), m4::Lighting{}, raster::colors::white, needs);
     }
     map.keys = std::move(pass.depth);
-    return map;
 }
 
 }  // namespace
@@ -566,12 +655,13 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
     // BEGIN SOLUTION
     // 1. The shadow maps, one per light that casts shadows.
     const std::size_t light_count = lighting.lights.size();
-    std::vector<ShadowMap> maps(light_count);  // an unused map holds no keys
+    thread_local std::vector<ShadowMap> maps;  // kept between frames: see shadow_pass
+    if (maps.size() < light_count) maps.resize(light_count);
     std::vector<const ShadowMap*> map_of(light_count, nullptr);
     const int res = shadow_settings.resolution;
     for (std::size_t k = 0; k < light_count; ++k) {
         if (!lighting.lights[k].casts_shadows || res < 1 || res > Image::kMaxSide) continue;
-        maps[k] = shadow_pass(objects, lighting.lights[k].direction, shadow_settings);
+        shadow_pass(objects, lighting.lights[k].direction, shadow_settings, maps[k]);
         map_of[k] = &maps[k];
         ++stats.shadow_passes;
         stats.shadow_texels += static_cast<long long>(res) * res;
@@ -584,9 +674,12 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
     state.shadow_settings = &shadow_settings;
     state.eye = camera.eye;
     const int width = frame.color.width(), height = frame.color.height();
-    std::vector<Vec4> clip;
-    std::vector<ScreenVertex> vertex;  // screen (for positions inside), w and the attributes
-    std::vector<unsigned char> is_inside, is_finite;
+    // Per position, kept between calls (a million-vertex mesh needs about 200 MB here: asking
+    // the system for it anew each frame, zeroed page by page, would cost more than using it).
+    thread_local std::vector<Vec4> clip;
+    thread_local std::vector<ScreenVertex> vertex;  // screen (for positions inside), w and the attributes
+    thread_local std::vector<unsigned char> is_inside, is_finite, is_snapped;
+    thread_local std::vector<m2::Fixed> snapped;  // the screen position in fixed point, once per position
     for (const Object& object : objects) {
         if (!object.mesh) continue;
         const m4::Mesh& mesh = *object.mesh;
@@ -612,6 +705,8 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
         vertex.resize(n);
         is_inside.resize(n);
         is_finite.resize(n);
+        is_snapped.resize(n);
+        snapped.resize(n);
         for (int i = 0; i < n; ++i) {
             const Vec3 position = mesh.positions[i];
             clip[i] = mvp * raster::point(position);
@@ -620,7 +715,11 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
             sv.w = clip[i].w;
             is_finite[i] = finite(clip[i]);
             is_inside[i] = is_finite[i] && inside(clip[i]);
-            if (is_inside[i]) sv.screen = m3::to_screen(clip[i], width, height);
+            is_snapped[i] = false;
+            if (is_inside[i]) {
+                sv.screen = m3::to_screen(clip[i], width, height);
+                is_snapped[i] = m2::snap({sv.screen.x, sv.screen.y}, snapped[i]);
+            }
             if (need_world) sv.world = m3::transform_point(object.model, position);
             if (lit) sv.normal = unit_or_zero(m3::transform_direction(to_world_normal, (*normals)[i]));
             if (need_uv && i < static_cast<int>(mesh.uvs.size())) sv.uv = mesh.uvs[i];
@@ -640,7 +739,10 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
                 ++stats.tangent_frames;
             }
             if (is_inside[t[0]] && is_inside[t[1]] && is_inside[t[2]]) {
-                fill(v0, v1, v2);
+                ++stats.triangles_drawn;
+                if (is_snapped[t[0]] && is_snapped[t[1]] && is_snapped[t[2]]) {  // (else fill_triangle would draw nothing)
+                    fill_snapped(frame, {&v0, &v1, &v2}, {snapped[t[0]], snapped[t[1]], snapped[t[2]]}, state, stats);
+                }
                 continue;
             }
             auto clip_vertex = [&](int i) {
