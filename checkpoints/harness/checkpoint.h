@@ -184,6 +184,25 @@ void run_checkpoint(const Suite& suite, const std::string& id);
 Artifacts render_guarded(int width, int height,
                          const std::function<void(raster::Image& main, Artifacts& out)>& draw);
 
+// Pieces of the render halves that draw panels through a pipeline (milestones 4 and 5).
+// The values `numbers` stores, each put into out.values under prefix + its key (a picture's
+// prerequisite groups under "pre<group>.").
+void record_under(Artifacts& out, const std::string& prefix,
+                  const std::function<void(std::map<std::string, double>& values)>& numbers);
+// The fill_triangle scene (width x height) that a scene drawn through the pipeline also draws:
+// `draw` renders it into a fresh guarded image with artifacts of its own, whose values go into
+// out.values under fill_key ("fill_triangle."), whose stray writes add to out's, and whose
+// picture becomes the image named fill_key without its final dot.
+void record_fill_scene(Artifacts& out, const std::string& fill_key, int width, int height,
+                       const std::function<void(raster::Image& img, Artifacts& scratch)>& draw);
+// Seconds `draw` takes: best of a few runs when `best_of` (a panel timed on its own), else one.
+double seconds_of(const std::function<void()>& draw, bool best_of);
+// A panel's frame, drawn to be w x h, into the rectangle (x0, y0, w, h) of img, its stray
+// writes counted; a frame of another size (the code under test replaced its image) is not
+// copied and sets values[key + ".resized"] = 1.
+void place_panel(Artifacts& out, const std::string& key, const raster::Image& frame, raster::Image& img, int x0,
+                 int y0, int w, int h);
+
 // ---- attribution: which function of the code under test drew what ----
 //
 // The render half wraps EVERY call into the code under test:

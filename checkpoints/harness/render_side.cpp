@@ -162,6 +162,42 @@ raster::Image guarded_image(int width, int height) {
     return img;
 }
 
+void record_under(Artifacts& out, const std::string& prefix,
+                  const std::function<void(std::map<std::string, double>& values)>& numbers) {
+    std::map<std::string, double> values;
+    numbers(values);
+    for (const auto& [key, value] : values) out.values[prefix + key] = value;
+}
+
+void record_fill_scene(Artifacts& out, const std::string& fill_key, int width, int height,
+                       const std::function<void(raster::Image& img, Artifacts& scratch)>& draw) {
+    Artifacts scratch;
+    raster::Image img = guarded_image(width, height);
+    draw(img, scratch);
+    for (const auto& [key, value] : scratch.values) out.values[fill_key + key] = value;
+    out.stray_writes += scratch.stray_writes;
+    out.images[fill_key.substr(0, fill_key.size() - 1)] = std::move(img);
+}
+
+double seconds_of(const std::function<void()>& draw, bool best_of) {
+    if (best_of) return time_best_of(draw);
+    const raster::Stopwatch watch;
+    draw();
+    return watch.seconds();
+}
+
+void place_panel(Artifacts& out, const std::string& key, const raster::Image& frame, raster::Image& img, int x0,
+                 int y0, int w, int h) {
+    out.stray_writes += frame.stray_writes();
+    if (frame.width() != w || frame.height() != h) {
+        out.values[key + ".resized"] = 1;
+        return;
+    }
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) img.set(x0 + x, y0 + y, frame.at(x, y));
+    }
+}
+
 void save_artifacts(const std::string& dir, const Artifacts& a) {
     // values.txt is "key name number" per line: a name with white space would be misread.
     for (const auto& [name, v] : a.values) {

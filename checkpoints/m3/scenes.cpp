@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "harness/checkpoint.h"
+#include "harness/scene_builders.h"
 #include "variant_random.h"
 #include "raster/mesh.h"
 
@@ -47,27 +48,8 @@ Mesh from_faces(std::vector<Vec3> positions, std::vector<std::vector<int>> faces
     return m;
 }
 
-Scene numbers(std::string id, std::string title, std::string hint, std::vector<int> todos, std::vector<Group> groups) {
-    Scene s;
-    s.id = std::move(id);
-    s.title = std::move(title);
-    s.hint = std::move(hint);
-    s.todos = std::move(todos);
-    s.width = s.height = 16;
-    s.groups = std::move(groups);
-    return s;
-}
-
-Scene picture(std::string id, std::string title, std::string hint, std::vector<int> todos, int w, int h) {
-    Scene s;
-    s.id = std::move(id);
-    s.title = std::move(title);
-    s.hint = std::move(hint);
-    s.todos = std::move(todos);
-    s.width = w;
-    s.height = h;
-    return s;
-}
+constexpr auto numbers = &cp::numbers_scene<Scene>;
+constexpr auto picture = &cp::picture_scene<Scene>;
 
 Panel panel(Camera c, std::vector<Item> items, int x0, int y0, int w, int h) { return {c, std::move(items), x0, y0, w, h}; }
 

@@ -8,7 +8,6 @@
 
 #include "depth_lighting.h"
 #include "m4/scenes.h"
-#include "raster/timer.h"
 #include "variant_random.h"
 
 namespace m4cp {
@@ -314,16 +313,8 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
                 }
             }
         };
-        double seconds = 0;
-        if (panel.timed) {
-            seconds = cp::time_best_of(draw);
-        } else {
-            const raster::Stopwatch watch;
-            draw();
-            seconds = watch.seconds();
-        }
         const std::string key = "panel" + std::to_string(p);
-        out.values[key + ".seconds"] = seconds;
+        out.values[key + ".seconds"] = cp::seconds_of(draw, panel.timed);
         // Read by the render half itself, not reported by the code under test.
         out.values[key + ".depth_capacity"] = double(frame.depth.capacity());
         for (std::size_t k = 0; k < panel.depth_probes.size(); ++k) {
@@ -340,14 +331,7 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
         out.values[key + ".stats.vertex_normals"] = double(total.vertex_normals);
         out.values[key + ".stats.shade_calls"] = double(total.shade_calls);
         out.values[key + ".stats.interpolated"] = double(total.interpolated);
-        out.stray_writes += frame.color.stray_writes();
-        if (frame.color.width() != panel.w || frame.color.height() != panel.h) {
-            out.values[key + ".resized"] = 1;  // clear_frame replaced the image
-            continue;
-        }
-        for (int y = 0; y < panel.h; ++y) {
-            for (int x = 0; x < panel.w; ++x) img.set(panel.x0 + x, panel.y0 + y, frame.color.at(x, y));
-        }
+        cp::place_panel(out, key, frame.color, img, panel.x0, panel.y0, panel.w, panel.h);
     }
 }
 
@@ -364,25 +348,18 @@ cp::Artifacts render_scene(const Scene& s) {
         }
         // The functions the picture is drawn with, each on its own checkpoint's inputs: the
         // judge checks them before it judges the picture (scenes.h, prerequisite_groups).
-        for (Group g : prerequisite_groups(s)) {
-            Values pre;
-            numbers(g, pre);
-            for (const auto& [key, value] : pre) out.values[prerequisite_key(g) + key] = value;
-        }
+        for (Group g : prerequisite_groups(s)) cp::record_under(out, prerequisite_key(g), [&](Values& v) { numbers(g, v); });
         // fill_triangle on m4.fill_triangle's own triangles, for a scene drawn through
         // draw_mesh: when the picture differs, the judge tells a wrong fill_triangle (TODO 8)
         // from a wrong draw_mesh (TODO 9) by these, not by the scene's theme.
         const bool pipeline = std::any_of(s.panels.begin(), s.panels.end(), [](const Panel& p) { return p.screen_tris.empty(); });
         if (pipeline) {
             const Scene& fill = scene(kFillScene);
-            cp::Artifacts scratch;
-            raster::Image fill_img = cp::guarded_image(fill.width, fill.height);
-            g_out = &scratch;
-            draw_panels(fill, fill_img, scratch);
-            g_out = &out;
-            for (const auto& [key, value] : scratch.values) out.values[kFillKey + key] = value;
-            out.stray_writes += scratch.stray_writes;
-            out.images[kFillKey.substr(0, kFillKey.size() - 1)] = std::move(fill_img);
+            cp::record_fill_scene(out, kFillKey, fill.width, fill.height, [&](raster::Image& fill_img, cp::Artifacts& scratch) {
+                g_out = &scratch;
+                draw_panels(fill, fill_img, scratch);
+                g_out = &out;
+            });
         }
         if (!s.panels.empty()) draw_panels(s, img, out);
     });

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "harness/checkpoint.h"
+#include "harness/scene_builders.h"
 #include "variant_random.h"
 
 namespace m4cp {
@@ -84,36 +85,12 @@ Item item(Mesh mesh) {
     return it;
 }
 
-Scene numbers(std::string id, std::string title, std::string hint, std::vector<int> todos, std::vector<Group> groups) {
-    Scene s;
-    s.id = std::move(id);
-    s.title = std::move(title);
-    s.hint = std::move(hint);
-    s.todos = std::move(todos);
-    s.width = s.height = 16;
-    s.groups = std::move(groups);
-    return s;
-}
-
-Scene picture(std::string id, std::string title, std::string hint, std::vector<int> todos, int w, int h) {
-    Scene s;
-    s.id = std::move(id);
-    s.title = std::move(title);
-    s.hint = std::move(hint);
-    s.todos = std::move(todos);
-    s.width = w;
-    s.height = h;
-    return s;
-}
+constexpr auto numbers = &cp::numbers_scene<Scene>;
+constexpr auto picture = &cp::picture_scene<Scene>;
 
 // A camera at a generic position (no vertex lands exactly on a pixel boundary).
 Camera cam(Vec3 eye, Vec3 target = {0.013, -0.021, 0.007}, double near = 0.5, double far = 100) {
-    Camera c;
-    c.eye = eye;
-    c.target = target;
-    c.near = near;
-    c.far = far;
-    return c;
+    return cp::camera_at<Camera>(eye, target, near, far);
 }
 
 Panel panel(Camera c, std::vector<Item> items, int x0, int y0, int w, int h, Shade shading, bool depth = true) {

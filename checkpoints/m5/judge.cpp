@@ -16,8 +16,8 @@
 #include <numbers>
 #include <optional>
 #include <set>
-#include <sstream>
 
+#include "harness/judging.h"
 #include "m5/scenes.h"
 #include "raster/plot.h"
 
@@ -25,30 +25,15 @@ namespace m5cp {
 
 namespace {
 
-using Values = std::map<std::string, double>;
+using cp::get;
+using cp::num;
+using cp::str;
+using cp::Values;
+using cp::vec3;
 
-std::string num(double v) {
-    if (std::abs(v) < 1e-12) v = 0;
-    std::ostringstream s;
-    s.precision(10);
-    s << v;
-    return s.str();
-}
+// cp::close, but an infinity only matches itself.
+bool close(double a, double b, double tol) { return std::isinf(a) || std::isinf(b) ? a == b : cp::close(a, b, tol); }
 
-double get(const Values& v, const std::string& key) {
-    const auto it = v.find(key);
-    return it == v.end() ? std::nan("") : it->second;
-}
-
-// a within tol of b, relative to max(1, |b|); NaN only matches NaN, an infinity only itself.
-bool close(double a, double b, double tol) {
-    if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
-    if (std::isinf(a) || std::isinf(b)) return a == b;
-    return std::abs(a - b) <= tol * std::max(1.0, std::abs(b));
-}
-
-Vec3 vec3(const Values& v, const std::string& key) { return {get(v, key + ".x"), get(v, key + ".y"), get(v, key + ".z")}; }
-std::string str(Vec3 p) { return "(" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) + ")"; }
 std::string str(Vec2 p) { return "(" + num(p.x) + ", " + num(p.y) + ")"; }
 bool same3(Vec3 a, Vec3 b, double tol) { return close(a.x, b.x, tol) && close(a.y, b.y, tol) && close(a.z, b.z, tol); }
 Vec3 mul(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
@@ -88,18 +73,7 @@ struct Ctx {
     const Values& ref;
     cp::Judgement& j;
     // "TODO 5: message" puts "TODO 5" into the finding's todo.
-    void add(const std::string& topic, const std::string& msg) {
-        std::string todo, text = msg;
-        const auto colon = msg.find(": ");
-        if (msg.rfind("TODO", 0) == 0 && colon != std::string::npos && colon < 20) {
-            todo = msg.substr(0, colon);
-            text = msg.substr(colon + 2);
-        }
-        for (const cp::Finding& f : j.findings) {
-            if (f.topic == topic && f.message == text) return;
-        }
-        j.findings.push_back({topic, text, "", todo});
-    }
+    void add(const std::string& topic, const std::string& msg) { cp::add_finding(j, topic, msg); }
 };
 
 // At most this many findings per function in one group, then a count of the rest.
@@ -850,23 +824,7 @@ void judge_group(Group g, Ctx& c) {
 // Pixels next to an edge or a color boundary of the expected image (a neighbour differs by more
 // than 16 levels) may differ, up to a fifth of them; elsewhere 3 levels (rounding).
 cp::Tolerance tolerance_for(const raster::Image& expected) {
-    cp::Tolerance t;
-    t.strict_channel_diff = 3;
-    t.lenient = raster::Mask(expected.width(), expected.height());
-    auto far_apart = [](Color a, Color b) { return max_diff(a, b) > 16; };
-    for (int y = 0; y < expected.height(); ++y) {
-        for (int x = 0; x < expected.width(); ++x) {
-            const Color c = expected.at(x, y);
-            for (int dy = -1; dy <= 1; ++dy) {
-                for (int dx = -1; dx <= 1; ++dx) {
-                    if (expected.in_bounds(x + dx, y + dy) && far_apart(expected.at(x + dx, y + dy), c)) t.lenient.set(x, y);
-                }
-            }
-        }
-    }
-    t.max_lenient_diffs = t.lenient.count() / 5;
-    t.why = "pixels next to an edge, a texel or shadow boundary or a change of mip level depend on rounding";
-    return t;
+    return cp::edge_tolerance(expected, "pixels next to an edge, a texel or shadow boundary or a change of mip level depend on rounding");
 }
 
 LevelData level_of(const TextureSpec& spec) {
@@ -1126,14 +1084,7 @@ raster::Image exact_spheres(const Panel& p) {
 }
 
 double panel_error(const raster::Image& img, const Panel& p, const raster::Image& truth) {
-    double sum = 0;
-    for (int y = 0; y < p.h; ++y) {
-        for (int x = 0; x < p.w; ++x) {
-            const Color a = img.at(p.x0 + x, p.y0 + y), e = truth.at(x, y);
-            sum += std::abs(a.r - e.r) + std::abs(a.g - e.g) + std::abs(a.b - e.b);
-        }
-    }
-    return sum / (3.0 * p.w * p.h);
+    return cp::rect_error(img, p.x0, p.y0, p.w, p.h, truth);
 }
 
 double round2(double x) { return std::round(x * 100) / 100; }
@@ -1514,9 +1465,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             }
         }
     }
-    for (const auto& [name, t] : totals) {
-        if (t.first != 0 || t.second != 0) c.j.measures[name + " (reference " + num(t.second) + ")"] = t.first;
-    }
+    cp::report_totals(c.j, totals);
     if (sized && s.checks.filter_error) judge_filter_chart(c, *mine, ref);
     for (const auto& [p, q] : s.checks.same_panels) {
         if (!sized) break;
@@ -1546,12 +1495,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         // The difference comes from the callers, fill_triangle (TODO 5) or draw_scene (TODO 9).
         {
             std::vector<std::string> passing;
-            for (Group g : prerequisite_groups(s)) {
-                const std::string id = prerequisite_checkpoint(g);
-                if (std::find(passing.begin(), passing.end(), id) == passing.end()) passing.push_back(id);
-            }
-            std::string list;
-            for (std::size_t i = 0; i < passing.size(); ++i) list += (i ? ", " : "") + passing[i];
+            for (Group g : prerequisite_groups(s)) passing.push_back(prerequisite_checkpoint(g));
+            const std::string list = cp::join_once(passing);
             const auto colon = theme_advice.find(": ");
             c.add(theme_topic, theme_advice.substr(0, colon) + ": the picture differs from the expected one beyond the tolerance "
                                                                "(see diff.png)" +
@@ -1575,47 +1520,35 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
         c.add("rasterizer", "TODO 5: " + std::to_string(artifacts.stray_writes) +
                                 " write(s) outside the image: clamp the bounding box to the image");
     }
-    const std::size_t before = j.findings.size();
-    for (Group g : s.groups) judge_group(g, c);
-    const bool own_failed = j.findings.size() > before;
     // A function the reference draws with that drew nothing (most often draw_scene, TODO 9, not
     // written yet): the harness names it, and every finding about the picture would follow from it.
-    bool drew_nothing = false;
-    for (const auto& [name, t] : reference.trace) {
-        const auto it = artifacts.trace.find(name);
-        drew_nothing |= t.writes > 0 && it != artifacts.trace.end() && it->second.calls > 0 && it->second.writes == 0;
-    }
-    if (!s.panels.empty() && !own_failed && !drew_nothing) judge_picture(c, artifacts, reference, expected);
-    bool fails = j.findings.size() > before || (!s.panels.empty() && drew_nothing);
-    if (!fails && !s.panels.empty() && !expected.empty()) {
-        const auto it = artifacts.images.find("main");
-        fails = it == artifacts.images.end() || cp::exceeds_tolerance(it->second, expected, j.tolerance);
-    }
     // A failing picture first checks the functions of TODOs 1-4 and 6-8 its panels use, on their
     // own checkpoints' inputs. One that is wrong is the finding ("fix TODO 3 first, see
     // m5.mipmaps"), and the picture's own findings, which would blame fill_triangle or
     // draw_scene for what it did, are left out. A checkpoint that passes stays passed.
     // A group whose own prerequisite fails is not told (sample() is wrong when fetch is).
-    std::vector<cp::Finding> first;
-    std::set<Group> failed;
-    for (Group g : fails ? prerequisite_groups(s) : std::vector<Group>{}) {
-        const std::string prefix = prerequisite_key(g);
-        const Values mine = cp::values_under(artifacts.values, prefix), ref = cp::values_under(reference.values, prefix);
-        cp::Judgement scratch;
-        Ctx sub{s, mine, ref, scratch};
-        judge_group(g, sub);
-        if (scratch.findings.empty()) continue;
-        failed.insert(g);
-        const auto deps = group_dependencies(g);
-        if (std::any_of(deps.begin(), deps.end(), [&failed](Group d) { return failed.count(d) > 0; })) continue;
-        first.push_back(cp::fix_first(scratch.findings.front(), prerequisite_checkpoint(g), "this picture is drawn with it",
-                                      "this picture cannot come out right before that checkpoint passes"));
-    }
-    if (!first.empty()) {
-        j.findings.resize(before);
-        j.findings.insert(j.findings.end(), first.begin(), first.end());
-    }
-    j.upstream_failed = !first.empty() || (!s.panels.empty() && own_failed);
+    auto prerequisites = [&] {
+        std::vector<cp::Finding> first;
+        std::set<Group> failed;
+        for (Group g : prerequisite_groups(s)) {
+            const auto f = cp::prerequisite_finding(artifacts, reference, prerequisite_key(g), prerequisite_checkpoint(g),
+                                                    [&](const Values& mine, const Values& ref, cp::Judgement& scratch) {
+                                                        Ctx sub{s, mine, ref, scratch};
+                                                        judge_group(g, sub);
+                                                    });
+            if (!f) continue;
+            failed.insert(g);
+            const auto deps = group_dependencies(g);
+            if (std::any_of(deps.begin(), deps.end(), [&failed](Group d) { return failed.count(d) > 0; })) continue;
+            first.push_back(*f);
+        }
+        return first;
+    };
+    auto numbers = [&] {
+        for (Group g : s.groups) judge_group(g, c);
+    };
+    cp::judge_pipeline(j, artifacts, reference, expected, !s.panels.empty(), numbers,
+                       [&] { judge_picture(c, artifacts, reference, expected); }, prerequisites);
     return j;
 }
 

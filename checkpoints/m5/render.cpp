@@ -8,7 +8,6 @@
 #include <cmath>
 
 #include "m5/scenes.h"
-#include "raster/timer.h"
 #include "textures_shadows.h"
 
 namespace m5cp {
@@ -320,25 +319,10 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
             total = cp::traced(*g_out, "draw_scene", frame.color,
                                [&] { return m5::draw_scene(frame, objects, camera, lighting, settings); });
         };
-        double seconds = 0;
-        if (panel.timed) {
-            seconds = cp::time_best_of(draw);
-        } else {
-            const raster::Stopwatch watch;
-            draw();
-            seconds = watch.seconds();
-        }
         const std::string key = "panel" + std::to_string(p);
-        out.values[key + ".seconds"] = seconds;
+        out.values[key + ".seconds"] = cp::seconds_of(draw, panel.timed);
         put_stats(out.values, key + ".stats", total);
-        out.stray_writes += frame.color.stray_writes();
-        if (frame.color.width() != panel.w || frame.color.height() != panel.h) {
-            out.values[key + ".resized"] = 1;  // the frame's image was replaced
-            continue;
-        }
-        for (int y = 0; y < panel.h; ++y) {
-            for (int x = 0; x < panel.w; ++x) img.set(panel.x0 + x, panel.y0 + y, frame.color.at(x, y));
-        }
+        cp::place_panel(out, key, frame.color, img, panel.x0, panel.y0, panel.w, panel.h);
     }
 }
 
@@ -352,25 +336,18 @@ cp::Artifacts render_scene(const Scene& s) {
         for (Group g : s.groups) numbers(g, out.values);
         // The functions the picture is drawn with, each on its own checkpoint's inputs: the
         // judge checks them before it judges the picture (scenes.h, prerequisite_groups).
-        for (Group g : prerequisite_groups(s)) {
-            Values pre;
-            numbers(g, pre);
-            for (const auto& [key, value] : pre) out.values[prerequisite_key(g) + key] = value;
-        }
+        for (Group g : prerequisite_groups(s)) cp::record_under(out, prerequisite_key(g), [&](Values& v) { numbers(g, v); });
         // fill_triangle on m5.fill_triangle's own triangles, for a scene drawn through
         // draw_scene: when the picture differs, the judge tells a wrong fill_triangle (TODO 5)
         // from a wrong draw_scene (TODO 9) by these.
         const bool pipeline = std::any_of(s.panels.begin(), s.panels.end(), [](const Panel& p) { return p.screen_tris.empty(); });
         if (pipeline) {
             const Scene& fill = scene(kFillScene);
-            cp::Artifacts scratch;
-            raster::Image fill_img = cp::guarded_image(fill.width, fill.height);
-            g_out = &scratch;
-            draw_panels(fill, fill_img, scratch);
-            g_out = &out;
-            for (const auto& [key, value] : scratch.values) out.values[kFillKey + key] = value;
-            out.stray_writes += scratch.stray_writes;
-            out.images[kFillKey.substr(0, kFillKey.size() - 1)] = std::move(fill_img);
+            cp::record_fill_scene(out, kFillKey, fill.width, fill.height, [&](raster::Image& fill_img, cp::Artifacts& scratch) {
+                g_out = &scratch;
+                draw_panels(fill, fill_img, scratch);
+                g_out = &out;
+            });
         }
         if (!s.panels.empty()) draw_panels(s, img, out);
     });

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "harness/checkpoint.h"
+#include "harness/scene_builders.h"
 #include "m5/judge.h"
 #include "m5/render.h"
 #include "m5/scenes.h"
@@ -28,14 +29,7 @@ std::string fixed(double v, int digits) {
     return buf;
 }
 
-Camera camera(Vec3 eye, Vec3 target, double near, double far) {
-    Camera c;
-    c.eye = eye;
-    c.target = target;
-    c.near = near;
-    c.far = far;
-    return c;
-}
+constexpr auto camera = &cp::camera_at<Camera>;
 
 // One panel filling a scene of its size, rendered by the reference (timed: best of a few runs).
 cp::Artifacts render_panel(Panel p, const std::string& id) {
