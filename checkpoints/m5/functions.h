@@ -56,7 +56,7 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"halfway vector", {"TODO 6", "normalize H = L + V before the dot product"}},
         {"light behind", {"TODO 6", "dot(N, L) <= 0: the light adds nothing, specular included"}},
         {"tangent frame", {"TODO 7", "T = (e1 dv2 - e2 dv1) / r, B = (e2 du1 - e1 du2) / r; no frame when r is 0 or not finite"}},
-        {"normal map", {"TODO 7", "texel to 2 t / 255 - 1; T' = T made orthogonal to n, B' = cross(n, T'); x T' + y B' + z n normalized"}},
+        {"normal map", {"TODO 7", "texel to 2 t / 255 - 1; T' = T made orthogonal to n, B' = cross(n, T') negated when dot(B', B) < 0; x T' + y B' + z n normalized"}},
         {"light matrix", {"TODO 8", "orthographic(-r, r, -r, r, r, 3r) * look_at(center - 2r dir, center, up)"}},
         {"shadow", {"TODO 8", "shadowed when d - bias / (2r) > the stored depth; outside the map or never drawn is lit"}},
         {"shadow bias", {"TODO 8", "bias = constant + slope * min(tan(theta), 10), in world units, divided by 2r in depth"}},

@@ -247,7 +247,8 @@ Frame t_frame(const FrameCase& c) {
 }
 
 // mode 0: the rule; 1: the texel read as t / 255 (no 2 t - 1); 2: T and B used without
-// making them orthonormal (each only normalized).
+// making them orthonormal (each only normalized); 3: B' = cross(n, T') never negated to agree
+// with B.
 Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
     const Vec3 n = c.n;
     if (!c.valid || n == Vec3{} || !raster::is_finite(n) || !raster::is_finite(c.texel) || !raster::is_finite(c.tangent) ||
@@ -257,11 +258,24 @@ Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
     const Vec3 tp = mode == 2 ? unit_or_zero(c.tangent) : unit_or_zero(c.tangent - n * raster::dot(n, c.tangent));
     if (tp == Vec3{}) return n;
     Vec3 bp = raster::cross(n, tp);
-    if (raster::dot(bp, c.bitangent) < 0) bp = -bp;
+    if (raster::dot(bp, c.bitangent) < 0 && mode != 3) bp = -bp;
     if (mode == 2) bp = unit_or_zero(c.bitangent);
     const Vec3 m = mode == 1 ? c.texel / 255 : c.texel * 2.0 / 255 - Vec3{1, 1, 1};
     const Vec3 r = unit_or_zero(tp * m.x + bp * m.y + n * m.z);
     return r == Vec3{} ? n : r;
+}
+
+// Why perturb_normal must return n itself here, or "" when it perturbs it (t_perturb's early
+// returns, in its order).
+std::string unchanged_because(const PerturbCase& c) {
+    const Vec3 n = c.n;
+    if (!c.valid) return "the frame is not valid";
+    if (n == Vec3{} || !raster::is_finite(n)) return "n is zero or not finite";
+    if (!raster::is_finite(c.texel)) return "the texel is not finite";
+    if (!raster::is_finite(c.tangent) || !raster::is_finite(c.bitangent)) return "T or B is not finite";
+    if (unit_or_zero(c.tangent - n * raster::dot(n, c.tangent)) == Vec3{}) return "T is along n, so T' is zero";
+    if (c.texel * 2.0 / 255 - Vec3{1, 1, 1} == Vec3{}) return "the texel decodes to the zero vector";
+    return "";
 }
 
 struct M4 {
@@ -703,8 +717,14 @@ void judge_tangent(Ctx& c) {
         } else if (same3(mine, t_perturb(k, 2), 1e-9)) {
             why = ": T and B were used as they are; make the frame orthonormal: T' = normalize(T - n dot(n, T)), "
                   "B' = cross(n, T') (negated when it points away from B)";
-        } else if (!k.valid || same3(want, k.n, 0)) {
-            why = ": here the normal must come back unchanged (no valid frame, T along n, a zero or non-finite vector)";
+        } else if (same3(mine, t_perturb(k, 3), 1e-9)) {
+            why = ": B' = cross(n, T') points away from B here (dot(B', B) < 0) and was not negated: B' must agree with "
+                  "B, if (dot(B', B) < 0) B' = -B', or a texel's y (green) tilts the normal the wrong way along v";
+        } else if (const std::string because = unchanged_because(k); !because.empty()) {
+            why = ": here the normal must come back unchanged: " + because;
+        } else {
+            why = " (T' = normalize(T - n dot(n, T)), B' = cross(n, T') negated when dot(B', B) < 0, m = 2 t / 255 - 1; "
+                  "the result is normalize(m.x T' + m.y B' + m.z n))";
         }
         out.add("normal map", "TODO 7: perturb_normal(T " + str(k.tangent) + ", B " + str(k.bitangent) + ", valid " +
                                   (k.valid ? "true" : "false") + ", n " + str(k.n) + ", texel " + str(k.texel) + ") gave " +
