@@ -330,22 +330,42 @@ M4 t_light(Vec3 direction, Vec3 center, double r, bool flip = false) {
     return mul(t_ortho(-r, r, -r, r, r, 3 * r), t_look_at(center + d * (flip ? 2 * r : -2 * r), center, up));
 }
 
-// The shadow factor on the tiny map. reversed: the comparison the wrong way round.
-double t_shadow(const TinyMap& map, const ShadowCase& c, bool reversed = false) {
+// x to 4 decimals, as a finding prints a worked number.
+double round4(double x) { return std::round(x * 1e4) / 1e4; }
+
+// The bias of a shadow case in world units: constant + slope * min(tan(theta), 10).
+double t_bias(const TinyMap& map, const ShadowCase& c, bool capped = true) {
+    const double cos_t = raster::dot(c.n, -unit_or_zero(map.direction));
+    const double tan_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t)) / cos_t;
+    return c.constant_bias + c.slope_bias * (capped ? std::min(tan_t, 10.0) : tan_t);
+}
+
+// The rule, and the mistakes the findings name.
+enum class Lookup {
+    kRule,
+    kReversed,    // the comparison the wrong way round
+    kBiasAdded,   // d + bias / (2r)
+    kWorldBias,   // d - bias, the bias in world units not converted to depth
+    kUncapped,    // tan(theta) not capped at 10
+};
+
+// The shadow factor on the tiny map.
+double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::kRule) {
     const M4 m = t_light(map.direction, map.center, map.radius);
     const Vec4 clip = mul(m, Vec4{c.p.x, c.p.y, c.p.z, 1});
     const double res = map.resolution;
     const double x = (clip.x / clip.w + 1) / 2 * res, y = (1 - clip.y / clip.w) / 2 * res, z = clip.z / clip.w;
     const double d = (z + 1) / 2;
-    const double cos_t = raster::dot(c.n, -unit_or_zero(map.direction));
-    const double tan_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t)) / cos_t;
-    const double bias = c.constant_bias + c.slope_bias * std::min(tan_t, 10.0);
+    const double bias = t_bias(map, c, mode != Lookup::kUncapped);
+    const double test = mode == Lookup::kBiasAdded   ? d + bias / (2 * map.radius)
+                        : mode == Lookup::kWorldBias ? d - bias
+                                                     : d - bias / (2 * map.radius);
     auto lit = [&](double col, double row) {
         if (col < 0 || row < 0 || col >= res || row >= res) return 1.0;
         const std::uint32_t key = map.keys[std::size_t(row) * std::size_t(map.resolution) + std::size_t(col)];
         if (key == 0xFFFFFFFFu) return 1.0;
         const double stored = std::bit_cast<float>(key);
-        const bool shadowed = reversed ? d - bias / (2 * map.radius) < stored : d - bias / (2 * map.radius) > stored;
+        const bool shadowed = mode == Lookup::kReversed ? test < stored : test > stored;
         return shadowed ? 0.0 : 1.0;
     };
     const double col = std::floor(x), row = std::floor(y);
@@ -787,6 +807,17 @@ void judge_shadow(Ctx& c) {
     }
     const TinyMap map = tiny_map();
     const auto cases = shadow_cases();
+    // A mistake in the bias that explains every case without PCF (and changes one of them).
+    auto fits = [&](Lookup mode) {
+        bool changes = false;
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            if (cases[i].pcf) continue;
+            const double wrong = t_shadow(map, cases[i], mode);
+            if (!close(get(v, "shadow" + std::to_string(i)), wrong, 1e-9)) return false;
+            changes |= !close(wrong, t_shadow(map, cases[i]), 1e-9);
+        }
+        return changes;
+    };
     Limited out{c, "shadow_factor", 0, 0, "shadow", "8"};
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const auto& k = cases[i];
@@ -794,12 +825,27 @@ void judge_shadow(Ctx& c) {
         if (close(mine, want, 1e-9)) continue;
         std::string why, topic = k.pcf ? "pcf" : "shadow";
         // The comparison reversed: the plain lit and shadowed cases (0 and 1) both come out the other way.
-        const bool reversed = close(get(v, "shadow0"), t_shadow(map, cases[0], true), 1e-9) &&
-                              close(get(v, "shadow1"), t_shadow(map, cases[1], true), 1e-9) &&
+        const bool reversed = close(get(v, "shadow0"), t_shadow(map, cases[0], Lookup::kReversed), 1e-9) &&
+                              close(get(v, "shadow1"), t_shadow(map, cases[1], Lookup::kReversed), 1e-9) &&
                               !close(get(v, "shadow0"), t_shadow(map, cases[0]), 1e-9);
+        const double bias = t_bias(map, k), depth_bias = bias / (2 * map.radius);
         if (reversed && !k.pcf) {
             why = ": the comparison is reversed: a point is in shadow when it is FARTHER from the light than the stored "
                   "depth, d - bias / (2r) > stored";
+        } else if (fits(Lookup::kBiasAdded) && close(mine, t_shadow(map, k, Lookup::kBiasAdded), 1e-9)) {
+            topic = "shadow bias";
+            why = ": the bias was ADDED to the point's depth: the test is d - bias / (2r) > stored, which moves the point "
+                  "TOWARD the light (here by " + num(round4(bias)) + " world units, " + num(round4(depth_bias)) +
+                  " in depth); adding it pushes a lit surface behind its own stored depth, so it shadows itself";
+        } else if (fits(Lookup::kWorldBias) && close(mine, t_shadow(map, k, Lookup::kWorldBias), 1e-9)) {
+            topic = "shadow bias";
+            why = ": the bias (here " + num(round4(bias)) + " world units) was subtracted from d as it is, not converted "
+                  "to depth units: d runs from 0 to 1 over the light's box, 2r = " + num(2 * map.radius) + " world units "
+                  "deep, so the test is d - bias / (2r) = d - " + num(round4(depth_bias)) + " > stored";
+        } else if (fits(Lookup::kUncapped) && close(mine, t_shadow(map, k, Lookup::kUncapped), 1e-9)) {
+            topic = "shadow bias";
+            why = ": tan(theta) = " + num(round4((t_bias(map, k, false) - k.constant_bias) / k.slope_bias)) +
+                  " here was not capped: bias = constant + slope * min(tan(theta), 10) = " + num(round4(bias)) + " world units";
         } else if (i == 2) {
             topic = "shadow bias";
             why = ": the point is 0.001 below the floor's stored depth; the constant bias (0.02 world units, 0.02 / (2r) in "

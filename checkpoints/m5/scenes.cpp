@@ -1113,6 +1113,7 @@ std::vector<ShadowCase> shadow_cases() {
         {{0.5, 1.5, -0.5}, up, 0.02, 0.02, false},    // above the occluder: lit
         {{0.5, 0, 0.5}, up, 0.02, 0.02, true},        // PCF at (1, 2): 5 of 9 lit
         {{-0.5, 0, -0.5}, up, 0, 0, false},           // no bias at all, under the occluder (2, 1): shadowed
+        {{1.5, -0.05, 0.5}, up, 0.02, 0.02, false},   // 0.05 below the floor, beyond the bias 0.02: shadowed
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m5.shadow_lookup");
