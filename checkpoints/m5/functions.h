@@ -44,7 +44,7 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"texel centers", {"TODO 2", "texel centers are at half-integers: bilinear starts from x' = u * w - 0.5"}},
         {"bilinear", {"TODO 2", "weights (1 - a)(1 - b), a(1 - b), (1 - a)b, ab for texels (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1)"}},
         {"non-finite uv", {"TODO 2", "a NaN or infinite uv, or a u * w that overflows, samples black"}},
-        {"mipmap", {"TODO 3", "each level max(1, floor(w / 2)) by max(1, floor(h / 2)), texels the plain average of 2x2, odd last row or column dropped"}},
+        {"mipmap", {"TODO 3", "each level max(1, floor(w / 2)) by max(1, floor(h / 2)), texels the plain average of 2x2, an index past a 1-texel side clamped, odd last row or column dropped"}},
         {"level of detail", {"TODO 4", "exact derivatives of A / B at the pixel center; rho in texel units of level 0; lambda = log2(rho)"}},
         {"filter", {"TODO 4", "lambda <= 0 or NaN: bilinear on level 0; else clamp to [0, L - 1]; nearest-mip level floor(lambda + 0.5)"}},
         {"lambda clamp", {"TODO 4", "clamp lambda to [0, L - 1]: never read past the 1x1 level"}},

@@ -507,12 +507,22 @@ void judge_mipmaps(Ctx& c) {
                     const LevelData& up = want[k - 1];
                     msg += ", the plain average of level " + std::to_string(k - 1) + "'s texels (" + std::to_string(2 * ti) + ", " +
                            std::to_string(2 * tj) + ") to (" + std::to_string(2 * ti + 1) + ", " + std::to_string(2 * tj + 1) + ")";
-                    if ((up.width > 1 && up.width % 2 == 1) || (up.height > 1 && up.height % 2 == 1)) {
+                    // What this texel's 2x2 block meets in level k - 1: a side of 1 texel (the index 2i + 1
+                    // or 2j + 1 past it is clamped to 0), or an odd side (its last column or row is dropped).
+                    const bool past_w = 2 * ti + 1 >= up.width, past_h = 2 * tj + 1 >= up.height;
+                    const bool odd = (up.width > 1 && up.width % 2 == 1) || (up.height > 1 && up.height % 2 == 1);
+                    if (past_w || past_h) {
+                        const std::string clamp = past_w && past_h ? "min(2i + 1, w - 1) and min(2j + 1, h - 1)"
+                                                  : past_w           ? "min(2i + 1, w - 1)"
+                                                                     : "min(2j + 1, h - 1)";
+                        msg += "; level " + std::to_string(k - 1) + " is " + size_name(up) + ", 1 texel " +
+                               (past_w && past_h ? "wide and high" : past_w ? "wide" : "high") +
+                               ": the index past that side must be CLAMPED to it, " + clamp +
+                               " (its texels counted twice); unclamped it reads another row or outside the level";
+                    } else if (odd) {
                         msg += "; level " + std::to_string(k - 1) + " is " + size_name(up) +
                                ", and an odd last row or column is DROPPED (a 5-wide level makes a 2-wide one from its texels 0 "
                                "to 3)";
-                    } else if (up.width == 1 || up.height == 1) {
-                        msg += "; a side of level " + std::to_string(k - 1) + " is 1 texel, so the index past it is clamped to it";
                     }
                 }
                 c.add("mipmap", msg);
