@@ -1199,8 +1199,9 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
          {"normal map", "TODOs 5 and 9: a triangle whose tangent frame is not valid keeps its normal"}},
         {"m5.shadow_box",
          {"shadow", "TODOs 5 and 9: draw_scene's depth pass draws every casting object through m4::draw_mesh into a "
-                    "resolution^2 float-Z frame with light_view_projection; fill_triangle multiplies each light's term "
-                    "by shadow_factor at the interpolated world position"}},
+                    "resolution^2 float-Z frame with light_view_projection, and the map keeps that matrix for the "
+                    "lookup; fill_triangle multiplies each light's term by shadow_factor at the interpolated world "
+                    "position"}},
         {"m5.shadow_acne",
          {"shadow", "TODOs 5 and 9: fill_triangle passes the normalized normal and the world position to "
                     "shadow_factor, which applies the settings' biases; draw_scene's depth pass uses "
