@@ -1171,16 +1171,21 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
     static const std::map<std::string, std::pair<std::string, std::string>> themes = {
         {"m5.fill_triangle",
          {"rasterizer", "TODO 5: fill_triangle tests each fragment's key first, weighs uv with m4::perspective_weights, "
-                        "computes lambda at the pixel center for a mip filter only, and calls sample()"}},
+                        "computes lambda at the pixel center (x + 0.5, y + 0.5) for a mip filter only, and calls sample()"}},
         {"m5.magnify",
          {"filter", "TODO 5: fill_triangle passes the material's filter and, for a mip filter, lambda = "
-                    "level_of_detail(uv_derivatives(...), level 0's size) to sample()"}},
+                    "level_of_detail(uv_derivatives(...) at the pixel center (x + 0.5, y + 0.5), level 0's size) to "
+                    "sample()"}},
         {"m5.receding_filters",
          {"filter", "TODO 5: fill_triangle passes the material's filter and, for a mip filter, lambda = "
-                    "level_of_detail(uv_derivatives at the pixel center of the screen positions, w and uv, level 0's "
-                    "size) to sample()"}},
-        {"m5.tiny_textures", {"filter", "TODO 5: fill_triangle computes lambda with level 0's size and lets sample() clamp it"}},
-        {"m5.grazing", {"filter", "TODO 5: fill_triangle computes lambda with level 0's size and lets sample() clamp it"}},
+                    "level_of_detail(uv_derivatives(screen positions, w, uv, x + 0.5, y + 0.5), level 0's size) to "
+                    "sample(): the derivatives at the pixel CENTER (x + 0.5, y + 0.5), not its corner (x, y)"}},
+        {"m5.tiny_textures",
+         {"filter", "TODO 5: fill_triangle computes lambda at the pixel center (x + 0.5, y + 0.5) with level 0's size "
+                    "and lets sample() clamp it"}},
+        {"m5.grazing",
+         {"filter", "TODO 5: fill_triangle computes lambda at the pixel center (x + 0.5, y + 0.5) with level 0's size "
+                    "and lets sample() clamp it"}},
         {"m5.wrap_quad", {"wrap", "TODO 5: fill_triangle samples with the texture's own wrap modes (wrap_u, wrap_v)"}},
         {"m5.perspective_uv",
          {"perspective uv", "TODO 5: fill_triangle interpolates uv with the perspective-correct weights "
@@ -1325,7 +1330,7 @@ void judge_filter_chart(Ctx& c, const raster::Image& mine, const cp::Artifacts& 
             c.add("filter", "TODOs 4 and 5: the " + name + " panel is " + num(round2(err)) +
                                 " levels from the 16x supersampled bilinear truth on average, the reference's " +
                                 num(round2(ref_err)) + " (allowed: " + num(round2(ref_err * 1.08 + 0.5)) +
-                                "): the level of detail (lambda at the pixel center, in texel units of level 0) or the "
+                                "): the level of detail (lambda at the pixel center (x + 0.5, y + 0.5), in texel units of level 0) or the "
                                 "filter's use of it is off");
         }
     }
@@ -1420,6 +1425,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
     const raster::Image* mine = main_it == art.images.end() ? nullptr : &main_it->second;
     const bool sized = mine && mine->width() == s.width && mine->height() == s.height;
     const auto [theme_topic, theme_advice] = picture_theme(s.id);
+    const std::size_t first_finding = c.j.findings.size();
     const auto ref_main = ref.images.find("main");
     const bool differs = sized && !expected.empty() && cp::exceeds_tolerance(*mine, expected, tolerance_for(expected));
     // judge() checked every function this picture is drawn with, and they pass. When the picture
@@ -1582,6 +1588,13 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                                        "), so look at how they are called") +
                                    ": " + theme_advice.substr(colon + 2) + ". This scene is about: " + s.hint);
         }
+    }
+    // The picture's own findings blame the caller the theme names (fill_triangle, draw_scene):
+    // their hint is what that caller must do, not the rules of the topic's function.
+    const std::string theme_todo = theme_advice.substr(0, theme_advice.find(": "));
+    for (std::size_t i = first_finding; i < c.j.findings.size(); ++i) {
+        cp::Finding& f = c.j.findings[i];
+        if (f.hint.empty() && f.topic == theme_topic && f.todo == theme_todo) f.hint = theme_advice.substr(theme_todo.size() + 2);
     }
 }
 

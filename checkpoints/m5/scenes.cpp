@@ -331,7 +331,8 @@ std::vector<Scene> build() {
     }
     {
         Scene s = picture("m5.receding_filters", "A receding textured plane with each filter, against a 16x supersampled truth",
-                          "nearest and bilinear alias far away; nearest-mip and trilinear pick the level from lambda; "
+                          "nearest and bilinear alias far away; nearest-mip and trilinear pick the level from lambda, taken at "
+                          "each pixel center (x + 0.5, y + 0.5); "
                           "each panel's error must be close to the reference's",
                           {4, 3, 2, 5}, 256, 160);
         const Filter filters[4] = {Filter::kNearest, Filter::kBilinear, Filter::kNearestMip, Filter::kTrilinear};
