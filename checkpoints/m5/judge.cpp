@@ -247,7 +247,8 @@ Frame t_frame(const FrameCase& c) {
 }
 
 // mode 0: the rule; 1: the texel read as t / 255 (no 2 t - 1); 2: T and B used without
-// making them orthonormal (each only normalized).
+// making them orthonormal (each only normalized); 3: B' = cross(n, T') never negated to agree
+// with B.
 Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
     const Vec3 n = c.n;
     if (!c.valid || n == Vec3{} || !raster::is_finite(n) || !raster::is_finite(c.texel) || !raster::is_finite(c.tangent) ||
@@ -257,11 +258,24 @@ Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
     const Vec3 tp = mode == 2 ? unit_or_zero(c.tangent) : unit_or_zero(c.tangent - n * raster::dot(n, c.tangent));
     if (tp == Vec3{}) return n;
     Vec3 bp = raster::cross(n, tp);
-    if (raster::dot(bp, c.bitangent) < 0) bp = -bp;
+    if (raster::dot(bp, c.bitangent) < 0 && mode != 3) bp = -bp;
     if (mode == 2) bp = unit_or_zero(c.bitangent);
     const Vec3 m = mode == 1 ? c.texel / 255 : c.texel * 2.0 / 255 - Vec3{1, 1, 1};
     const Vec3 r = unit_or_zero(tp * m.x + bp * m.y + n * m.z);
     return r == Vec3{} ? n : r;
+}
+
+// Why perturb_normal must return n itself here, or "" when it perturbs it (t_perturb's early
+// returns, in its order).
+std::string unchanged_because(const PerturbCase& c) {
+    const Vec3 n = c.n;
+    if (!c.valid) return "the frame is not valid";
+    if (n == Vec3{} || !raster::is_finite(n)) return "n is zero or not finite";
+    if (!raster::is_finite(c.texel)) return "the texel is not finite";
+    if (!raster::is_finite(c.tangent) || !raster::is_finite(c.bitangent)) return "T or B is not finite";
+    if (unit_or_zero(c.tangent - n * raster::dot(n, c.tangent)) == Vec3{}) return "T is along n, so T' is zero";
+    if (c.texel * 2.0 / 255 - Vec3{1, 1, 1} == Vec3{}) return "the texel decodes to the zero vector";
+    return "";
 }
 
 struct M4 {
@@ -316,22 +330,42 @@ M4 t_light(Vec3 direction, Vec3 center, double r, bool flip = false) {
     return mul(t_ortho(-r, r, -r, r, r, 3 * r), t_look_at(center + d * (flip ? 2 * r : -2 * r), center, up));
 }
 
-// The shadow factor on the tiny map. reversed: the comparison the wrong way round.
-double t_shadow(const TinyMap& map, const ShadowCase& c, bool reversed = false) {
+// x to 4 decimals, as a finding prints a worked number.
+double round4(double x) { return std::round(x * 1e4) / 1e4; }
+
+// The bias of a shadow case in world units: constant + slope * min(tan(theta), 10).
+double t_bias(const TinyMap& map, const ShadowCase& c, bool capped = true) {
+    const double cos_t = raster::dot(c.n, -unit_or_zero(map.direction));
+    const double tan_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t)) / cos_t;
+    return c.constant_bias + c.slope_bias * (capped ? std::min(tan_t, 10.0) : tan_t);
+}
+
+// The rule, and the mistakes the findings name.
+enum class Lookup {
+    kRule,
+    kReversed,    // the comparison the wrong way round
+    kBiasAdded,   // d + bias / (2r)
+    kWorldBias,   // d - bias, the bias in world units not converted to depth
+    kUncapped,    // tan(theta) not capped at 10
+};
+
+// The shadow factor on the tiny map.
+double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::kRule) {
     const M4 m = t_light(map.direction, map.center, map.radius);
     const Vec4 clip = mul(m, Vec4{c.p.x, c.p.y, c.p.z, 1});
     const double res = map.resolution;
     const double x = (clip.x / clip.w + 1) / 2 * res, y = (1 - clip.y / clip.w) / 2 * res, z = clip.z / clip.w;
     const double d = (z + 1) / 2;
-    const double cos_t = raster::dot(c.n, -unit_or_zero(map.direction));
-    const double tan_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t)) / cos_t;
-    const double bias = c.constant_bias + c.slope_bias * std::min(tan_t, 10.0);
+    const double bias = t_bias(map, c, mode != Lookup::kUncapped);
+    const double test = mode == Lookup::kBiasAdded   ? d + bias / (2 * map.radius)
+                        : mode == Lookup::kWorldBias ? d - bias
+                                                     : d - bias / (2 * map.radius);
     auto lit = [&](double col, double row) {
         if (col < 0 || row < 0 || col >= res || row >= res) return 1.0;
         const std::uint32_t key = map.keys[std::size_t(row) * std::size_t(map.resolution) + std::size_t(col)];
         if (key == 0xFFFFFFFFu) return 1.0;
         const double stored = std::bit_cast<float>(key);
-        const bool shadowed = reversed ? d - bias / (2 * map.radius) < stored : d - bias / (2 * map.radius) > stored;
+        const bool shadowed = mode == Lookup::kReversed ? test < stored : test > stored;
         return shadowed ? 0.0 : 1.0;
     };
     const double col = std::floor(x), row = std::floor(y);
@@ -473,12 +507,22 @@ void judge_mipmaps(Ctx& c) {
                     const LevelData& up = want[k - 1];
                     msg += ", the plain average of level " + std::to_string(k - 1) + "'s texels (" + std::to_string(2 * ti) + ", " +
                            std::to_string(2 * tj) + ") to (" + std::to_string(2 * ti + 1) + ", " + std::to_string(2 * tj + 1) + ")";
-                    if ((up.width > 1 && up.width % 2 == 1) || (up.height > 1 && up.height % 2 == 1)) {
+                    // What this texel's 2x2 block meets in level k - 1: a side of 1 texel (the index 2i + 1
+                    // or 2j + 1 past it is clamped to 0), or an odd side (its last column or row is dropped).
+                    const bool past_w = 2 * ti + 1 >= up.width, past_h = 2 * tj + 1 >= up.height;
+                    const bool odd = (up.width > 1 && up.width % 2 == 1) || (up.height > 1 && up.height % 2 == 1);
+                    if (past_w || past_h) {
+                        const std::string clamp = past_w && past_h ? "min(2i + 1, w - 1) and min(2j + 1, h - 1)"
+                                                  : past_w           ? "min(2i + 1, w - 1)"
+                                                                     : "min(2j + 1, h - 1)";
+                        msg += "; level " + std::to_string(k - 1) + " is " + size_name(up) + ", 1 texel " +
+                               (past_w && past_h ? "wide and high" : past_w ? "wide" : "high") +
+                               ": the index past that side must be CLAMPED to it, " + clamp +
+                               " (its texels counted twice); unclamped it reads another row or outside the level";
+                    } else if (odd) {
                         msg += "; level " + std::to_string(k - 1) + " is " + size_name(up) +
                                ", and an odd last row or column is DROPPED (a 5-wide level makes a 2-wide one from its texels 0 "
                                "to 3)";
-                    } else if (up.width == 1 || up.height == 1) {
-                        msg += "; a side of level " + std::to_string(k - 1) + " is 1 texel, so the index past it is clamped to it";
                     }
                 }
                 c.add("mipmap", msg);
@@ -703,8 +747,14 @@ void judge_tangent(Ctx& c) {
         } else if (same3(mine, t_perturb(k, 2), 1e-9)) {
             why = ": T and B were used as they are; make the frame orthonormal: T' = normalize(T - n dot(n, T)), "
                   "B' = cross(n, T') (negated when it points away from B)";
-        } else if (!k.valid || same3(want, k.n, 0)) {
-            why = ": here the normal must come back unchanged (no valid frame, T along n, a zero or non-finite vector)";
+        } else if (same3(mine, t_perturb(k, 3), 1e-9)) {
+            why = ": B' = cross(n, T') points away from B here (dot(B', B) < 0) and was not negated: B' must agree with "
+                  "B, if (dot(B', B) < 0) B' = -B', or a texel's y (green) tilts the normal the wrong way along v";
+        } else if (const std::string because = unchanged_because(k); !because.empty()) {
+            why = ": here the normal must come back unchanged: " + because;
+        } else {
+            why = " (T' = normalize(T - n dot(n, T)), B' = cross(n, T') negated when dot(B', B) < 0, m = 2 t / 255 - 1; "
+                  "the result is normalize(m.x T' + m.y B' + m.z n))";
         }
         out.add("normal map", "TODO 7: perturb_normal(T " + str(k.tangent) + ", B " + str(k.bitangent) + ", valid " +
                                   (k.valid ? "true" : "false") + ", n " + str(k.n) + ", texel " + str(k.texel) + ") gave " +
@@ -767,6 +817,17 @@ void judge_shadow(Ctx& c) {
     }
     const TinyMap map = tiny_map();
     const auto cases = shadow_cases();
+    // A mistake in the bias that explains every case without PCF (and changes one of them).
+    auto fits = [&](Lookup mode) {
+        bool changes = false;
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            if (cases[i].pcf) continue;
+            const double wrong = t_shadow(map, cases[i], mode);
+            if (!close(get(v, "shadow" + std::to_string(i)), wrong, 1e-9)) return false;
+            changes |= !close(wrong, t_shadow(map, cases[i]), 1e-9);
+        }
+        return changes;
+    };
     Limited out{c, "shadow_factor", 0, 0, "shadow", "8"};
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const auto& k = cases[i];
@@ -774,12 +835,27 @@ void judge_shadow(Ctx& c) {
         if (close(mine, want, 1e-9)) continue;
         std::string why, topic = k.pcf ? "pcf" : "shadow";
         // The comparison reversed: the plain lit and shadowed cases (0 and 1) both come out the other way.
-        const bool reversed = close(get(v, "shadow0"), t_shadow(map, cases[0], true), 1e-9) &&
-                              close(get(v, "shadow1"), t_shadow(map, cases[1], true), 1e-9) &&
+        const bool reversed = close(get(v, "shadow0"), t_shadow(map, cases[0], Lookup::kReversed), 1e-9) &&
+                              close(get(v, "shadow1"), t_shadow(map, cases[1], Lookup::kReversed), 1e-9) &&
                               !close(get(v, "shadow0"), t_shadow(map, cases[0]), 1e-9);
+        const double bias = t_bias(map, k), depth_bias = bias / (2 * map.radius);
         if (reversed && !k.pcf) {
             why = ": the comparison is reversed: a point is in shadow when it is FARTHER from the light than the stored "
                   "depth, d - bias / (2r) > stored";
+        } else if (fits(Lookup::kBiasAdded) && close(mine, t_shadow(map, k, Lookup::kBiasAdded), 1e-9)) {
+            topic = "shadow bias";
+            why = ": the bias was ADDED to the point's depth: the test is d - bias / (2r) > stored, which moves the point "
+                  "TOWARD the light (here by " + num(round4(bias)) + " world units, " + num(round4(depth_bias)) +
+                  " in depth); adding it pushes a lit surface behind its own stored depth, so it shadows itself";
+        } else if (fits(Lookup::kWorldBias) && close(mine, t_shadow(map, k, Lookup::kWorldBias), 1e-9)) {
+            topic = "shadow bias";
+            why = ": the bias (here " + num(round4(bias)) + " world units) was subtracted from d as it is, not converted "
+                  "to depth units: d runs from 0 to 1 over the light's box, 2r = " + num(2 * map.radius) + " world units "
+                  "deep, so the test is d - bias / (2r) = d - " + num(round4(depth_bias)) + " > stored";
+        } else if (fits(Lookup::kUncapped) && close(mine, t_shadow(map, k, Lookup::kUncapped), 1e-9)) {
+            topic = "shadow bias";
+            why = ": tan(theta) = " + num(round4((t_bias(map, k, false) - k.constant_bias) / k.slope_bias)) +
+                  " here was not capped: bias = constant + slope * min(tan(theta), 10) = " + num(round4(bias)) + " world units";
         } else if (i == 2) {
             topic = "shadow bias";
             why = ": the point is 0.001 below the floor's stored depth; the constant bias (0.02 world units, 0.02 / (2r) in "
@@ -1095,16 +1171,21 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
     static const std::map<std::string, std::pair<std::string, std::string>> themes = {
         {"m5.fill_triangle",
          {"rasterizer", "TODO 5: fill_triangle tests each fragment's key first, weighs uv with m4::perspective_weights, "
-                        "computes lambda at the pixel center for a mip filter only, and calls sample()"}},
+                        "computes lambda at the pixel center (x + 0.5, y + 0.5) for a mip filter only, and calls sample()"}},
         {"m5.magnify",
          {"filter", "TODO 5: fill_triangle passes the material's filter and, for a mip filter, lambda = "
-                    "level_of_detail(uv_derivatives(...), level 0's size) to sample()"}},
+                    "level_of_detail(uv_derivatives(...) at the pixel center (x + 0.5, y + 0.5), level 0's size) to "
+                    "sample()"}},
         {"m5.receding_filters",
          {"filter", "TODO 5: fill_triangle passes the material's filter and, for a mip filter, lambda = "
-                    "level_of_detail(uv_derivatives at the pixel center of the screen positions, w and uv, level 0's "
-                    "size) to sample()"}},
-        {"m5.tiny_textures", {"filter", "TODO 5: fill_triangle computes lambda with level 0's size and lets sample() clamp it"}},
-        {"m5.grazing", {"filter", "TODO 5: fill_triangle computes lambda with level 0's size and lets sample() clamp it"}},
+                    "level_of_detail(uv_derivatives(screen positions, w, uv, x + 0.5, y + 0.5), level 0's size) to "
+                    "sample(): the derivatives at the pixel CENTER (x + 0.5, y + 0.5), not its corner (x, y)"}},
+        {"m5.tiny_textures",
+         {"filter", "TODO 5: fill_triangle computes lambda at the pixel center (x + 0.5, y + 0.5) with level 0's size "
+                    "and lets sample() clamp it"}},
+        {"m5.grazing",
+         {"filter", "TODO 5: fill_triangle computes lambda at the pixel center (x + 0.5, y + 0.5) with level 0's size "
+                    "and lets sample() clamp it"}},
         {"m5.wrap_quad", {"wrap", "TODO 5: fill_triangle samples with the texture's own wrap modes (wrap_u, wrap_v)"}},
         {"m5.perspective_uv",
          {"perspective uv", "TODO 5: fill_triangle interpolates uv with the perspective-correct weights "
@@ -1123,8 +1204,9 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
          {"normal map", "TODOs 5 and 9: a triangle whose tangent frame is not valid keeps its normal"}},
         {"m5.shadow_box",
          {"shadow", "TODOs 5 and 9: draw_scene's depth pass draws every casting object through m4::draw_mesh into a "
-                    "resolution^2 float-Z frame with light_view_projection; fill_triangle multiplies each light's term "
-                    "by shadow_factor at the interpolated world position"}},
+                    "resolution^2 float-Z frame with light_view_projection, and the map keeps that matrix for the "
+                    "lookup; fill_triangle multiplies each light's term by shadow_factor at the interpolated world "
+                    "position"}},
         {"m5.shadow_acne",
          {"shadow", "TODOs 5 and 9: fill_triangle passes the normalized normal and the world position to "
                     "shadow_factor, which applies the settings' biases; draw_scene's depth pass uses "
@@ -1248,7 +1330,7 @@ void judge_filter_chart(Ctx& c, const raster::Image& mine, const cp::Artifacts& 
             c.add("filter", "TODOs 4 and 5: the " + name + " panel is " + num(round2(err)) +
                                 " levels from the 16x supersampled bilinear truth on average, the reference's " +
                                 num(round2(ref_err)) + " (allowed: " + num(round2(ref_err * 1.08 + 0.5)) +
-                                "): the level of detail (lambda at the pixel center, in texel units of level 0) or the "
+                                "): the level of detail (lambda at the pixel center (x + 0.5, y + 0.5), in texel units of level 0) or the "
                                 "filter's use of it is off");
         }
     }
@@ -1343,6 +1425,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
     const raster::Image* mine = main_it == art.images.end() ? nullptr : &main_it->second;
     const bool sized = mine && mine->width() == s.width && mine->height() == s.height;
     const auto [theme_topic, theme_advice] = picture_theme(s.id);
+    const std::size_t first_finding = c.j.findings.size();
     const auto ref_main = ref.images.find("main");
     const bool differs = sized && !expected.empty() && cp::exceeds_tolerance(*mine, expected, tolerance_for(expected));
     // judge() checked every function this picture is drawn with, and they pass. When the picture
@@ -1505,6 +1588,13 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                                        "), so look at how they are called") +
                                    ": " + theme_advice.substr(colon + 2) + ". This scene is about: " + s.hint);
         }
+    }
+    // The picture's own findings blame the caller the theme names (fill_triangle, draw_scene):
+    // their hint is what that caller must do, not the rules of the topic's function.
+    const std::string theme_todo = theme_advice.substr(0, theme_advice.find(": "));
+    for (std::size_t i = first_finding; i < c.j.findings.size(); ++i) {
+        cp::Finding& f = c.j.findings[i];
+        if (f.hint.empty() && f.topic == theme_topic && f.todo == theme_todo) f.hint = theme_advice.substr(theme_todo.size() + 2);
     }
 }
 

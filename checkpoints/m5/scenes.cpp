@@ -331,7 +331,8 @@ std::vector<Scene> build() {
     }
     {
         Scene s = picture("m5.receding_filters", "A receding textured plane with each filter, against a 16x supersampled truth",
-                          "nearest and bilinear alias far away; nearest-mip and trilinear pick the level from lambda; "
+                          "nearest and bilinear alias far away; nearest-mip and trilinear pick the level from lambda, taken at "
+                          "each pixel center (x + 0.5, y + 0.5); "
                           "each panel's error must be close to the reference's",
                           {4, 3, 2, 5}, 256, 160);
         const Filter filters[4] = {Filter::kNearest, Filter::kBilinear, Filter::kNearestMip, Filter::kTrilinear};
@@ -1113,6 +1114,7 @@ std::vector<ShadowCase> shadow_cases() {
         {{0.5, 1.5, -0.5}, up, 0.02, 0.02, false},    // above the occluder: lit
         {{0.5, 0, 0.5}, up, 0.02, 0.02, true},        // PCF at (1, 2): 5 of 9 lit
         {{-0.5, 0, -0.5}, up, 0, 0, false},           // no bias at all, under the occluder (2, 1): shadowed
+        {{1.5, -0.05, 0.5}, up, 0.02, 0.02, false},   // 0.05 below the floor, beyond the bias 0.02: shadowed
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m5.shadow_lookup");
