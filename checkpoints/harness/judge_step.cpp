@@ -293,6 +293,7 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
         v.numbers_only = ref_it != reference.images.end() && rec.reference.same_size &&
                          rec.reference.differing_pixels == 0 && m.same_size && m.differing_pixels == 0 &&
                          one_color(expected);
+        rec.numbers_only = v.numbers_only;
         if (v.numbers_only) {
             report << "  no picture to compare: this checkpoint judges numbers\n";
         } else {
@@ -384,6 +385,16 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
     }
     v.findings = std::move(findings);
     return v;
+}
+
+std::string picture_caption(const std::string& milestone, const std::string& name) {
+    if (name == "diff") return std::string("diff (") + kDiffLegend + ")";
+    if (name == "fill_triangle") {
+        return "fill_triangle: the " + milestone + ".fill_triangle scene, drawn in this run by your fill_triangle "
+               "alone; if it differs from that checkpoint's expected picture, fix fill_triangle first";
+    }
+    if (name == "error_vs_time") return "error_vs_time: error against run time, yours beside the reference's";
+    return name;
 }
 
 void write_pictures(const std::string& dir, Verdict& v) {

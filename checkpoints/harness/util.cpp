@@ -31,8 +31,9 @@ std::string todo_list(std::vector<int> todos) {
     return out;
 }
 
-std::string todo_label(const std::vector<int>& todos) {
-    const std::string list = todo_list(todos);
+std::string todo_label(const std::vector<int>& todos) { return todo_label(todo_list(todos)); }
+
+std::string todo_label(const std::string& list) {
     if (list.empty()) return "";
     return (list.find_first_of("-,") == std::string::npos ? "TODO " : "TODOs ") + list;
 }
