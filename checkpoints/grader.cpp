@@ -407,7 +407,7 @@ body{font-family:system-ui,sans-serif;margin:1.5em;max-width:70em;color:#222}
 table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:.25em .5em;text-align:left}
 .pass{color:#186a1e}.fail{color:#a51d1d}.error{color:#a51d1d;font-weight:bold}
 section{border-top:1px solid #ddd;margin-top:1.2em;padding-top:.6em}
-figure{display:inline-block;margin:.3em .6em .3em 0}figcaption{font-size:.85em;color:#555}
+figure{display:inline-block;margin:.3em .6em .3em 0;vertical-align:top}figcaption{font-size:.85em;color:#555}
 img{image-rendering:pixelated;border:1px solid #999}
 pre{background:#f5f5f5;padding:.6em;white-space:pre-wrap;max-height:24em;overflow:auto}
 </style>)";
