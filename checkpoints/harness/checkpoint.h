@@ -263,6 +263,9 @@ std::string todo_label(const std::string& list);  // "TODO 1" for "1", "TODOs 1-
 // and of the functions those use, transitively.
 std::vector<int> needed_todos(const Suite& suite, const Artifacts& reference);
 
+// True when every pixel of `img` has the color of the first (an empty image is not).
+bool one_color(const raster::Image& img);
+
 // A fresh image for a render half's extra pictures, with the stray-write budget set.
 raster::Image guarded_image(int width, int height);
 

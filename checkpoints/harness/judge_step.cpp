@@ -17,16 +17,6 @@ namespace cp {
 
 namespace {
 
-// True when every pixel of `img` has the color of the first (an empty image is not).
-bool one_color(const raster::Image& img) {
-    if (img.empty()) return false;
-    const std::uint8_t* p = img.data();
-    for (std::size_t i = 3; i < img.size_bytes(); i += 3) {
-        if (p[i] != p[0] || p[i + 1] != p[1] || p[i + 2] != p[2]) return false;
-    }
-    return true;
-}
-
 // ---- image comparison under a tolerance policy ----
 
 struct PolicyCount {

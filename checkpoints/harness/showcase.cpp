@@ -1,5 +1,6 @@
 #include "harness/showcase.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -19,12 +20,12 @@ namespace cp {
 namespace {
 
 // `text` in lines of at most `width` characters (a longer word gets a line of its own); a
-// command in backquotes ("`make check-m1`,") stays on one line.
+// command in backquotes ("(`make check-m1`,") stays on one line.
 std::string wrapped(const std::string& text, std::size_t width) {
     std::istringstream words(text);
     std::string word, line, out, more;
     while (words >> word) {
-        while (word.front() == '`' && word.find('`', 1) == std::string::npos && words >> more) word += " " + more;
+        while (std::count(word.begin(), word.end(), '`') % 2 == 1 && words >> more) word += " " + more;
         if (!line.empty() && line.size() + 1 + word.size() > width) {
             out += line + "\n";
             line.clear();
@@ -37,7 +38,8 @@ std::string wrapped(const std::string& text, std::size_t width) {
 }  // namespace
 
 std::string demo_note(int milestone, bool earlier) {
-    const std::string m = std::to_string(milestone), before = std::to_string(milestone - 1);
+    const std::string m = std::to_string(milestone);
+    const std::string before = (milestone == 3 ? "1 and " : "1 to ") + std::to_string(milestone - 1);
     if (!earlier) {
         return "This demo draws with your milestone " + m + " code: run `make check-m" + m +
                "`, whose first failing checkpoint says what to fix.";
@@ -47,7 +49,7 @@ std::string demo_note(int milestone, bool earlier) {
         checks += (k > 1 ? ", `make check-m" : "`make check-m") + std::to_string(k) + "`";
     }
     return "This demo draws with your own milestones 1 to " + m + ", not only milestone " + m +
-           " (the checkpoints of milestone " + m + " use the reference's milestones 1 to " + before +
+           " (the checkpoints of milestone " + m + " use the reference's milestones " + before +
            ", so they can pass while the demo cannot). Make the earlier milestones pass their own "
            "checkpoints first (" + checks + "), then `make check-m" + m + "`.";
 }
@@ -79,8 +81,10 @@ int showcase(const std::vector<ShowItem>& items, const std::string& out_dir, con
             const std::string expected_path = expected_png_path(item.milestone, item.id);
             std::string psnr = "-", differ = "-", mae = "-";
             if (fs::exists(expected_path)) {
-                const raster::ImageMetrics m = raster::compare(img, raster::read_png(expected_path));
-                far += !m.same_size || m.differing_share > 0.5;
+                const raster::Image expected = raster::read_png(expected_path);
+                const raster::ImageMetrics m = raster::compare(img, expected);
+                // Far: most of it differs, or nothing is drawn where the expected image shows something.
+                far += !m.same_size || m.differing_share > 0.5 || (one_color(img) && !one_color(expected));
                 differ = std::to_string(m.differing_pixels);
                 std::ostringstream s1, s2;
                 s1 << std::fixed << std::setprecision(3) << m.mean_abs_error;
@@ -105,8 +109,8 @@ int showcase(const std::vector<ShowItem>& items, const std::string& out_dir, con
     std::cout << std::string(100, '-') << "\n";
     if (far > 0 && !far_note.empty()) {
         const std::string count = std::to_string(far) + " of " + std::to_string(items.size()) +
-                                  " pictures differ from the expected ones in more than half their pixels "
-                                  "(or could not be drawn).";
+                                  " pictures are far from the expected ones: more than half their pixels differ, "
+                                  "nothing is drawn, or they could not be drawn.";
         std::cout << wrapped(count + " " + far_note, 100) << std::string(100, '-') << "\n";
         html << "<p>" << html_escape(count + " " + far_note) << "</p>\n";
     }
