@@ -141,12 +141,11 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         for (const std::string& name : names) {
             const std::filesystem::path p = std::filesystem::path(r.output_dir) / (name + ".png");
             if (!std::filesystem::exists(p)) continue;
-            // Scene pictures about 320 px wide, the diff about 512 and at least twice its size (so a
-            // single pixel of it shows), each a whole multiple of its own size; charts as they are.
+            // Scene pictures about 320 px wide, each a whole multiple of its own size, the diff at
+            // least twice its size (so a single pixel of it shows); charts as they are.
             const int natural = png_width_of(p);
             const int width = name == "error_vs_time" ? (natural > 0 ? natural : 640)
-                              : name == "diff"        ? cp::shown_width(natural, 512, 2)
-                                                      : cp::shown_width(natural, 320);
+                                                      : cp::shown_width(natural, 320, name == "diff" ? 2 : 1);
             html << "<figure style=\"width:" << width + 2 << "px\"><a href=\"" << html_escape(p.string())
                  << "\"><img alt=\"" << html_escape(r.id + " " + name) << "\" width=\"" << width << "\" src=\""
                  << html_escape(p.string()) << "\"></a><figcaption>"
