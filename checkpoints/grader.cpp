@@ -407,8 +407,8 @@ body{font-family:system-ui,sans-serif;margin:1.5em;max-width:70em;color:#222}
 table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:.25em .5em;text-align:left}
 .pass{color:#186a1e}.fail{color:#a51d1d}.error{color:#a51d1d;font-weight:bold}
 section{border-top:1px solid #ddd;margin-top:1.2em;padding-top:.6em}
-figure{display:inline-block;margin:.3em .6em .3em 0}figcaption{font-size:.85em;color:#555}
-img{image-rendering:pixelated;width:192px;border:1px solid #999}
+figure{display:inline-block;margin:.3em .6em .3em 0;vertical-align:top}figcaption{font-size:.85em;color:#555}
+img{image-rendering:pixelated;border:1px solid #999}
 pre{background:#f5f5f5;padding:.6em;white-space:pre-wrap;max-height:24em;overflow:auto}
 </style>)";
 
@@ -532,17 +532,26 @@ int cmd_report(const std::vector<std::string>& args) {
                 }
             };
             take([](const std::string& p) { return p == "actual"; });
-            take([](const std::string& p) { return p != "actual" && p != "expected" && p != "diff"; });
+            // The fill_triangle picture tells a wrong fill_triangle from a wrong caller: of no use
+            // where the scene passes.
+            take([&](const std::string& p) {
+                return p != "actual" && p != "expected" && p != "diff" && !(status == "pass" && p == "fill_triangle");
+            });
             take([](const std::string& p) { return p == "expected"; });
             take([](const std::string& p) { return p == "diff"; });
             for (const std::string& pic : pics) {
                 // Only names the judge wrote, from its own folder.
                 const fs::path pf = mdir / "verdicts" / cname / (pic + ".png");
                 if (pic.find('/') != std::string::npos || !fs::is_regular_file(pf)) continue;
-                sections << "<figure><img alt=\"" << html_escape(pic) << "\" src=\"data:image/png;base64,"
-                         << base64(read_text(pf)) << "\"><figcaption>"
-                         << html_escape(pic == "diff" ? std::string("diff (") + cp::kDiffLegend + ")" : pic)
-                         << "</figcaption></figure>";
+                // Pictures a whole multiple of their size (so no pixel is dropped), the diff at least
+                // twice its size, charts as they are.
+                const std::string png = read_text(pf);
+                const int natural = cp::png_width(png);
+                const int width = pic == "error_vs_time" ? (natural > 0 ? natural : 480)
+                                                         : cp::shown_width(natural, 192, pic == "diff" ? 2 : 1);
+                sections << "<figure style=\"width:" << width + 2 << "px\"><img alt=\"" << html_escape(pic)
+                         << "\" width=\"" << width << "\" src=\"data:image/png;base64," << base64(png)
+                         << "\"><figcaption>" << html_escape(cp::picture_caption(m, pic)) << "</figcaption></figure>";
             }
             sections << "</section>\n";
         }

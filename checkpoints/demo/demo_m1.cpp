@@ -15,5 +15,6 @@ int main(int argc, char** argv) {
     for (const m1cp::Scene& s : m1cp::scenes()) {
         if (s.demo) items.push_back({"m1", s.id, s.title, m1cp::student::render});
     }
-    return cp::showcase(items, argc > 1 ? argv[1] : "demo_out/m1", "Milestone 1 demo: your lines");
+    return cp::showcase(items, argc > 1 ? argv[1] : "demo_out/m1", "Milestone 1 demo: your lines",
+                        cp::demo_note(1, false));
 }

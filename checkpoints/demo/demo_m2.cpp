@@ -15,5 +15,6 @@ int main(int argc, char** argv) {
     for (const m2cp::Scene& s : m2cp::scenes()) {
         if (s.demo) items.push_back({"m2", s.id, s.title, m2cp::student::render});
     }
-    return cp::showcase(items, argc > 1 ? argv[1] : "demo_out/m2", "Milestone 2 demo: your triangles");
+    return cp::showcase(items, argc > 1 ? argv[1] : "demo_out/m2", "Milestone 2 demo: your triangles",
+                        cp::demo_note(2, false));
 }

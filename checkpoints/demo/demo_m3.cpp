@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     for (const m3cp::Scene& s : m3cp::scenes()) {
         if (s.demo) items.push_back({"m3", s.id, s.title, m3cp::student::render});
     }
-    const int shown = cp::showcase(items, out, "Milestone 3 demo: your whole renderer");
+    const int shown = cp::showcase(items, out, "Milestone 3 demo: your whole renderer", cp::demo_note(3, true));
     try {
         return animate(std::filesystem::path(out) / "frames") | shown;
     } catch (const std::exception& e) {

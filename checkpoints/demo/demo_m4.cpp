@@ -19,5 +19,6 @@ int main(int argc, char** argv) {
     for (const m4cp::Scene& s : m4cp::scenes()) {
         if (s.demo) items.push_back({"m4", s.id, s.title, m4cp::student::render});
     }
-    return cp::showcase(items, out, "Milestone 4 demo: your whole renderer, lit and depth-tested");
+    return cp::showcase(items, out, "Milestone 4 demo: your whole renderer, lit and depth-tested",
+                        cp::demo_note(4, true));
 }

@@ -20,5 +20,6 @@ int main(int argc, char** argv) {
     for (const m5cp::Scene& s : m5cp::scenes()) {
         if (s.demo) items.push_back({"m5", s.id, s.title, m5cp::student::render});
     }
-    return cp::showcase(items, out, "Milestone 5 demo: your whole renderer, textured, lit and shadowed");
+    return cp::showcase(items, out, "Milestone 5 demo: your whole renderer, textured, lit and shadowed",
+                        cp::demo_note(5, true));
 }

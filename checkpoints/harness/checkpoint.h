@@ -257,10 +257,14 @@ double watchdog_seconds();  // RASTER_WATCHDOG_SECONDS, default 5
 // "1-4, 6" for {1, 2, 3, 4, 6}; "TODO 5" / "TODOs 3-4" with todo_label.
 std::string todo_list(std::vector<int> todos);
 std::string todo_label(const std::vector<int>& todos);
+std::string todo_label(const std::string& list);  // "TODO 1" for "1", "TODOs 1-4, 6" for "1-4, 6"
 
 // The TODOs a scene needs: those of every function the reference called on it (calls > 0),
 // and of the functions those use, transitively.
 std::vector<int> needed_todos(const Suite& suite, const Artifacts& reference);
+
+// True when every pixel of `img` has the color of the first (an empty image is not).
+bool one_color(const raster::Image& img);
 
 // A fresh image for a render half's extra pictures, with the stray-write budget set.
 raster::Image guarded_image(int width, int height);

@@ -17,16 +17,6 @@ namespace cp {
 
 namespace {
 
-// True when every pixel of `img` has the color of the first (an empty image is not).
-bool one_color(const raster::Image& img) {
-    if (img.empty()) return false;
-    const std::uint8_t* p = img.data();
-    for (std::size_t i = 3; i < img.size_bytes(); i += 3) {
-        if (p[i] != p[0] || p[i + 1] != p[1] || p[i + 2] != p[2]) return false;
-    }
-    return true;
-}
-
 // ---- image comparison under a tolerance policy ----
 
 struct PolicyCount {
@@ -293,6 +283,7 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
         v.numbers_only = ref_it != reference.images.end() && rec.reference.same_size &&
                          rec.reference.differing_pixels == 0 && m.same_size && m.differing_pixels == 0 &&
                          one_color(expected);
+        rec.numbers_only = v.numbers_only;
         if (v.numbers_only) {
             report << "  no picture to compare: this checkpoint judges numbers\n";
         } else {
@@ -384,6 +375,16 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
     }
     v.findings = std::move(findings);
     return v;
+}
+
+std::string picture_caption(const std::string& milestone, const std::string& name) {
+    if (name == "diff") return std::string("diff (") + kDiffLegend + ")";
+    if (name == "fill_triangle") {
+        return "fill_triangle: the " + milestone + ".fill_triangle scene, drawn in this run by your fill_triangle "
+               "alone; if it differs from that checkpoint's expected picture, fix fill_triangle first";
+    }
+    if (name == "error_vs_time") return "error_vs_time: error against run time, yours beside the reference's";
+    return name;
 }
 
 void write_pictures(const std::string& dir, Verdict& v) {

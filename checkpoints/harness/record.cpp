@@ -46,7 +46,7 @@ void write_record(const Record& r) {
     out << std::setprecision(10);
     out << "id\t" << r.id << "\nmilestone\t" << r.milestone << "\norder\t" << r.order << "\ntitle\t" << r.title
         << "\nstatus\t" << r.status << "\nconcepts\t" << r.concepts << "\nhas_metrics\t"
-        << r.has_metrics << "\nstudent_ms\t" << r.student_ms << "\nreference_ms\t"
+        << r.has_metrics << "\nnumbers_only\t" << r.numbers_only << "\nstudent_ms\t" << r.student_ms << "\nreference_ms\t"
         << r.reference_ms << "\noutput_dir\t" << r.output_dir << "\n";
     put_metrics(out, "student.", r.student);
     put_metrics(out, "reference.", r.reference);
@@ -77,6 +77,7 @@ std::vector<Record> read_records(const std::string& dir) {
             else if (key == "status") r.status = v;
             else if (key == "concepts") r.concepts = v;
             else if (key == "has_metrics") r.has_metrics = v == "1";
+            else if (key == "numbers_only") r.numbers_only = v == "1";
             else if (key == "student_ms") r.student_ms = std::stod(v);
             else if (key == "reference_ms") r.reference_ms = std::stod(v);
             else if (key == "output_dir") r.output_dir = v;

@@ -17,6 +17,7 @@ struct Record {
     std::string status;    // pass, fail, or crashed (the process never finished the checkpoint)
     std::string concepts;  // comma-separated concept tags of the findings
     bool has_metrics = false;
+    bool numbers_only = false;  // a checkpoint of numbers: no picture to show (see Verdict)
     raster::ImageMetrics student, reference;  // each against the expected image
     double student_ms = 0, reference_ms = 0;
     std::string output_dir;  // where the failure pictures are

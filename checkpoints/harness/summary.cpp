@@ -23,6 +23,7 @@
 #include "harness/diagnosis.h"
 #include "harness/html.h"
 #include "harness/record.h"
+#include "harness/verdict.h"
 
 namespace {
 
@@ -39,6 +40,14 @@ std::string measure_text(double v) {
 }
 
 using cp::html_escape;
+
+// The width of the PNG at `path`, 0 when it cannot be read.
+int png_width_of(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(24, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    return in ? cp::png_width(head) : 0;
+}
 
 nlohmann::json json_number(double v) {
     if (!std::isfinite(v)) return nullptr;  // JSON has no infinity (PSNR of identical images)
@@ -60,9 +69,9 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
             "<style>body{font-family:sans-serif;background:#1e1e1e;color:#ddd;margin:2em}"
             "a{color:#8cf}table{border-collapse:collapse}td,th{padding:4px 10px;border-bottom:1px solid #444;text-align:left}"
             ".pass{color:#6c6}.fail{color:#f66}.crashed{color:#fa0}"
-            "figure{display:inline-block;margin:0 10px 10px 0;max-width:320px;vertical-align:top}"
+            "figure{display:inline-block;margin:0 10px 10px 0;vertical-align:top}"
             "figcaption{font-size:85%;color:#aaa}"
-            "img{image-rendering:pixelated;image-rendering:crisp-edges;width:320px;border:1px solid #555}</style>\n"
+            "img{image-rendering:pixelated;image-rendering:crisp-edges;border:1px solid #555}</style>\n"
             "<h1>Checkpoints</h1>\n<table><tr><th>checkpoint<th>result<th>pixels differ<th>mean error"
             "<th>your ms<th>reference ms<th>needs TODOs<th>concepts</tr>\n";
     for (const cp::Record& r : records) {
@@ -91,7 +100,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         html << "<h2 id=\"" << html_escape(r.id) << "\">" << html_escape(r.id) << ": " << html_escape(r.title)
              << "</h2>\n<p class=\"" << html_escape(r.status) << "\">" << html_escape(r.status) << " "
              << html_escape(r.concepts) << "</p>\n";
-        if (!r.todos.empty()) html << "<p>needs TODOs " << html_escape(r.todos) << "</p>\n";
+        if (!r.todos.empty()) html << "<p>needs " << html_escape(cp::todo_label(r.todos)) << "</p>\n";
         if (!r.findings.empty()) {
             html << "<ul>";
             for (const std::string& f : r.findings) html << "<li>" << html_escape(f) << "</li>";
@@ -104,27 +113,43 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
             html << "<p>No pictures: the checkpoint crashed or ran out of time. Run it alone to see why.</p>\n";
             continue;
         }
-        // actual, expected and diff first, then every other picture the scene made.
-        std::vector<std::string> names = {"actual", "expected", "diff"};
+        // actual, expected and diff first, then every other picture the scene made. A checkpoint
+        // of numbers has no picture of its own: its blank canvas and expected image are left out.
+        std::vector<std::string> names;
+        if (r.numbers_only) {
+            html << "<p class=\"numbers-only\">Numbers only: this checkpoint judges the numbers your functions "
+                    "return, so there is no picture to show.</p>\n";
+        } else {
+            names = {"actual", "expected", "diff"};
+        }
         std::vector<std::string> others;
         std::error_code ec;
         for (const auto& entry : std::filesystem::directory_iterator(r.output_dir, ec)) {
             const std::string stem = entry.path().stem().string();
-            if (entry.path().extension() == ".png" && std::find(names.begin(), names.end(), stem) == names.end()) {
+            // The fill_triangle picture helps to tell a wrong fill_triangle from a wrong caller: of
+            // no use where the scene passes.
+            const bool unhelpful = stem == "fill_triangle" && r.status == "pass";
+            if (entry.path().extension() == ".png" && stem != "actual" && stem != "expected" && stem != "diff" &&
+                !unhelpful) {
                 others.push_back(stem);
             }
         }
         std::sort(others.begin(), others.end());
         names.insert(names.end(), others.begin(), others.end());
+        if (names.empty()) continue;
         html << "<p>";
         for (const std::string& name : names) {
             const std::filesystem::path p = std::filesystem::path(r.output_dir) / (name + ".png");
             if (!std::filesystem::exists(p)) continue;
-            const std::string caption =
-                name == "diff" ? std::string("diff (") + cp::kDiffLegend + ")" : name;
-            html << "<figure><a href=\"" << html_escape(p.string()) << "\"><img alt=\"" << html_escape(r.id + " " + name)
-                 << "\" src=\"" << html_escape(p.string()) << "\"></a><figcaption>" << html_escape(caption)
-                 << "</figcaption></figure>";
+            // Scene pictures about 320 px wide, each a whole multiple of its own size, the diff at
+            // least twice its size (so a single pixel of it shows); charts as they are.
+            const int natural = png_width_of(p);
+            const int width = name == "error_vs_time" ? (natural > 0 ? natural : 640)
+                                                      : cp::shown_width(natural, 320, name == "diff" ? 2 : 1);
+            html << "<figure style=\"width:" << width + 2 << "px\"><a href=\"" << html_escape(p.string())
+                 << "\"><img alt=\"" << html_escape(r.id + " " + name) << "\" width=\"" << width << "\" src=\""
+                 << html_escape(p.string()) << "\"></a><figcaption>"
+                 << html_escape(cp::picture_caption(r.milestone, name)) << "</figcaption></figure>";
         }
         html << "</p>\n";
     }

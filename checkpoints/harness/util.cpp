@@ -31,8 +31,18 @@ std::string todo_list(std::vector<int> todos) {
     return out;
 }
 
-std::string todo_label(const std::vector<int>& todos) {
-    const std::string list = todo_list(todos);
+bool one_color(const raster::Image& img) {
+    if (img.empty()) return false;
+    const std::uint8_t* p = img.data();
+    for (std::size_t i = 3; i < img.size_bytes(); i += 3) {
+        if (p[i] != p[0] || p[i + 1] != p[1] || p[i + 2] != p[2]) return false;
+    }
+    return true;
+}
+
+std::string todo_label(const std::vector<int>& todos) { return todo_label(todo_list(todos)); }
+
+std::string todo_label(const std::string& list) {
     if (list.empty()) return "";
     return (list.find_first_of("-,") == std::string::npos ? "TODO " : "TODOs ") + list;
 }

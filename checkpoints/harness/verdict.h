@@ -61,6 +61,10 @@ Finding unreadable_artifacts_finding(const std::string& why);
 // "VERDICT <id> PASS|FAIL concepts=<topics>". Picture paths are printed for a failure when the
 // pictures were written (record.output_dir set).
 void print_verdict(std::ostream& out, const Suite& suite, const Verdict& v);
+// The caption of a picture in the HTML reports, by file stem, for a checkpoint of `milestone`
+// ("m5"): what the picture is when its name does not say ("diff" with its legend, the
+// "fill_triangle" that a pipeline scene also draws, the "error_vs_time" chart), else the name.
+std::string picture_caption(const std::string& milestone, const std::string& name);
 // Writes every picture into `dir` (created) and sets v.record.output_dir to its absolute path.
 void write_pictures(const std::string& dir, Verdict& v);
 
