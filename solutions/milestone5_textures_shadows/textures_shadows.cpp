@@ -678,7 +678,11 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
     // the system for it anew each frame, zeroed page by page, would cost more than using it).
     thread_local std::vector<Vec4> clip;
     thread_local std::vector<ScreenVertex> vertex;  // screen (for positions inside), w and the attributes
-    thread_local std::vector<unsigned char> is_inside, is_finite, is_snapped;
+    // Where each position is, as milestone 4's draw_mesh keeps it: inside the clip volume and
+    // snapped, inside but beyond the snapping range (fill_triangle would draw nothing), outside
+    // (its triangles are clipped) or not finite (its triangles are skipped).
+    enum class Where : unsigned char { kInside, kInsideUnsnapped, kOutside, kNotFinite };
+    thread_local std::vector<Where> where;
     thread_local std::vector<m2::Fixed> snapped;  // the screen position in fixed point, once per position
     for (const Object& object : objects) {
         if (!object.mesh) continue;
@@ -703,9 +707,7 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
         }
         clip.resize(n);
         vertex.resize(n);
-        is_inside.resize(n);
-        is_finite.resize(n);
-        is_snapped.resize(n);
+        where.resize(n);
         snapped.resize(n);
         for (int i = 0; i < n; ++i) {
             const Vec3 position = mesh.positions[i];
@@ -713,12 +715,13 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
             ScreenVertex& sv = vertex[i];
             sv = {};
             sv.w = clip[i].w;
-            is_finite[i] = finite(clip[i]);
-            is_inside[i] = is_finite[i] && inside(clip[i]);
-            is_snapped[i] = false;
-            if (is_inside[i]) {
+            if (!finite(clip[i])) {
+                where[i] = Where::kNotFinite;
+            } else if (inside(clip[i])) {
                 sv.screen = m3::to_screen(clip[i], width, height);
-                is_snapped[i] = m2::snap({sv.screen.x, sv.screen.y}, snapped[i]);
+                where[i] = m2::snap({sv.screen.x, sv.screen.y}, snapped[i]) ? Where::kInside : Where::kInsideUnsnapped;
+            } else {
+                where[i] = Where::kOutside;
             }
             if (need_world) sv.world = m3::transform_point(object.model, position);
             if (lit) sv.normal = unit_or_zero(m3::transform_direction(to_world_normal, (*normals)[i]));
@@ -732,15 +735,16 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
         };
         for (const auto& t : mesh.triangles) {
             if (t[0] < 0 || t[0] >= n || t[1] < 0 || t[1] >= n || t[2] < 0 || t[2] >= n) continue;
-            if (!is_finite[t[0]] || !is_finite[t[1]] || !is_finite[t[2]]) continue;
+            const Where w0 = where[t[0]], w1 = where[t[1]], w2 = where[t[2]];
+            if (w0 == Where::kNotFinite || w1 == Where::kNotFinite || w2 == Where::kNotFinite) continue;
             const ScreenVertex &v0 = vertex[t[0]], &v1 = vertex[t[1]], &v2 = vertex[t[2]];
             if (normal_mapped) {
                 state.tangent = tangent_frame(v0.world, v1.world, v2.world, v0.uv, v1.uv, v2.uv);
                 ++stats.tangent_frames;
             }
-            if (is_inside[t[0]] && is_inside[t[1]] && is_inside[t[2]]) {
+            if (w0 != Where::kOutside && w1 != Where::kOutside && w2 != Where::kOutside) {
                 ++stats.triangles_drawn;
-                if (is_snapped[t[0]] && is_snapped[t[1]] && is_snapped[t[2]]) {  // (else fill_triangle would draw nothing)
+                if (w0 == Where::kInside && w1 == Where::kInside && w2 == Where::kInside) {
                     fill_snapped(frame, {&v0, &v1, &v2}, {snapped[t[0]], snapped[t[1]], snapped[t[2]]}, state, stats);
                 }
                 continue;
