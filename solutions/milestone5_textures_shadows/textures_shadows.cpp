@@ -303,6 +303,19 @@ inline Vec3 unit_or_zero(Vec3 v) {
 
 inline Vec3 times(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 
+// m4::to_color, inline (milestone 4's reference inlines it the same way): called out of line
+// for every fragment, returning the three-byte Color through memory cost more than all the
+// rest of a plain fragment. Clamp to [0, 255], then round to nearest; a NaN gives 0.
+inline std::uint8_t channel(double v) { return static_cast<std::uint8_t>(std::min(std::max(0.0, v), 255.0) + 0.5); }
+inline Color color_of(Vec3 levels) { return {channel(levels.x), channel(levels.y), channel(levels.z)}; }
+
+// m4::depth_key(kFloatZ, z, 1), inline, for the same reason: NaN is kClearKey, else the float
+// of (z + 1) / 2 clamped to [0, 1].
+inline std::uint32_t float_z_key(double z) {
+    if (std::isnan(z)) return m4::kClearKey;
+    return std::bit_cast<std::uint32_t>(static_cast<float>(std::clamp((z + 1) / 2, 0.0, 1.0)));
+}
+
 // x^s: a whole-number exponent up to 1024 (the usual shininess) by repeated squaring, a few
 // multiplications instead of std::pow's logarithm and exponential; any other by std::pow.
 inline double power(double x, double s) {
@@ -490,6 +503,7 @@ void fill_snapped(Frame& frame, std::array<const ScreenVertex*, 3> p, std::array
     const bool lit = material.lit && state.lighting;
     const Texture* const normal_map = lit ? material.normal_map : nullptr;
     const bool need_uv = texture || normal_map;
+    const bool interpolates = need_uv || lit;  // uv, or the normal and the world position
     const bool has_specular = !(material.specular == Vec3{});
     const int base_width = texture && !texture->levels.empty() ? texture->levels[0].width : 0;
     const int base_height = texture && !texture->levels.empty() ? texture->levels[0].height : 0;
@@ -518,17 +532,21 @@ void fill_snapped(Frame& frame, std::array<const ScreenVertex*, 3> p, std::array
             ++fragments;
             const double l0 = double(e1) * inv_area, l1 = double(e2) * inv_area, l2 = double(e0) * inv_area;
             const double z = l0 * a0.screen.z + l1 * a1.screen.z + l2 * a2.screen.z;
-            // kFloatZ does not read w. A fragment behind the stored one is not shaded.
-            const std::uint32_t key = m4::depth_key(m4::DepthFormat::kFloatZ, z, 1);
+            // A fragment behind the stored one is not shaded.
+            const std::uint32_t key = float_z_key(z);
             if (key == m4::kClearKey || key > depth[at]) continue;
             ++shaded;
-            std::array<double, 3> pw = {l0 * iw0, l1 * iw1, l2 * iw2};
-            const double sum = pw[0] + pw[1] + pw[2];
-            if (sum > 0 && std::isfinite(sum)) {
-                const double inv_sum = 1 / sum;
-                pw = {pw[0] * inv_sum, pw[1] * inv_sum, pw[2] * inv_sum};
-            } else {
-                pw = {l0, l1, l2};  // as m4::perspective_weights: the screen weights
+            // The perspective-correct weights, for materials that interpolate anything.
+            std::array<double, 3> pw = {l0, l1, l2};
+            if (interpolates) {
+                pw = {l0 * iw0, l1 * iw1, l2 * iw2};
+                const double sum = pw[0] + pw[1] + pw[2];
+                if (sum > 0 && std::isfinite(sum)) {
+                    const double inv_sum = 1 / sum;
+                    pw = {pw[0] * inv_sum, pw[1] * inv_sum, pw[2] * inv_sum};
+                } else {
+                    pw = {l0, l1, l2};  // as m4::perspective_weights: the screen weights
+                }
             }
             const Vec2 uv = need_uv ? a0.uv * pw[0] + a1.uv * pw[1] + a2.uv * pw[2] : Vec2{};
 
@@ -576,7 +594,7 @@ void fill_snapped(Frame& frame, std::array<const ScreenVertex*, 3> p, std::array
                     }
                 }
             }
-            const Color c = m4::to_color(levels);
+            const Color c = color_of(levels);
             // Nearer keys passed above; only an exact tie needs the colors.
             if (key == depth[at] && !m4::depth_passes(key, c, depth[at], img.at(x, y))) continue;
             depth[at] = key;
