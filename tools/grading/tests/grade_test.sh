@@ -468,6 +468,7 @@ PY
     numbers=$(sed -n '/<section id="m3-m3.matrix_ops"/,/<\/section>/p' <<<"$dom")
     grep -q 'class="numbers-only">Numbers only' <<<"$numbers" || fail "m3.matrix_ops has no numbers-only note"
     if grep -q '<img' <<<"$numbers"; then fail "m3.matrix_ops, a checkpoint of numbers, shows a picture"; fi
+    if grep -q 'image error' <<<"$numbers"; then fail "m3.matrix_ops, a checkpoint of numbers, reports an image error"; fi
     [ "$(grep -o 'class="numbers-only"' <<<"$dom" | wc -l)" = 1 ] || fail "a numbers-only note on a picture checkpoint"
     [ "${broken:-x}" = 0 ] || fail "pictures did not load (data-broken=${broken:-missing})"
     grep -q 'octant' <<<"$dom" || fail "the failing checkpoint's findings are not on the page"
