@@ -290,6 +290,7 @@ int cmd_judge(const std::vector<std::string>& args) {
               {"tolerated", r.tolerated},
               {"tolerated_why", r.tolerated_why},
               {"has_metrics", r.has_metrics},
+              {"numbers_only", r.numbers_only},
               {"student", metrics_json(r.student)},
               {"reference", metrics_json(r.reference)},
               {"measures", r.measures},
@@ -435,7 +436,9 @@ std::string checkpoint_output(const json& v, const std::string& why) {
     if (!why.empty()) o << "\n" << why;
     o << std::fixed << std::setprecision(3) << "\nrender time: yours " << v.value("student_ms", 0.0)
       << " ms, reference " << v.value("reference_ms", 0.0) << " ms";
-    if (v.value("has_metrics", false)) {
+    if (v.value("numbers_only", false)) {
+        o << "\nno picture to compare: this checkpoint judges numbers";
+    } else if (v.value("has_metrics", false)) {
         o << "\nimage error: " << v["student"].value("differing_pixels", 0LL) << " pixel(s) differ, mean abs error "
           << v["student"].value("mean_abs_error", 0.0);
     }
@@ -523,7 +526,10 @@ int cmd_report(const std::vector<std::string>& args) {
                      << (hidden ? " (hidden)" : "") << ": " << fmt_points(got) << " / " << fmt_points(max)
                      << "</h3><pre>" << html_escape(output) << "</pre>\n";
             // The student's main picture first, then its other pictures, the expected image and
-            // the difference.
+            // the difference. A checkpoint of numbers has no picture of its own: its blank canvas,
+            // expected image and diff are left out, and a note says why.
+            const bool numbers_only = v.value("numbers_only", false);
+            if (numbers_only) sections << cp::kNumbersOnlyNote;
             const auto listed = v.value("pictures", std::vector<std::string>{});
             std::vector<std::string> pics;
             auto take = [&](auto keep) {
@@ -531,14 +537,16 @@ int cmd_report(const std::vector<std::string>& args) {
                     if (keep(p)) pics.push_back(p);
                 }
             };
-            take([](const std::string& p) { return p == "actual"; });
+            if (!numbers_only) take([](const std::string& p) { return p == "actual"; });
             // The fill_triangle picture tells a wrong fill_triangle from a wrong caller: of no use
             // where the scene passes.
             take([&](const std::string& p) {
                 return p != "actual" && p != "expected" && p != "diff" && !(status == "pass" && p == "fill_triangle");
             });
-            take([](const std::string& p) { return p == "expected"; });
-            take([](const std::string& p) { return p == "diff"; });
+            if (!numbers_only) {
+                take([](const std::string& p) { return p == "expected"; });
+                take([](const std::string& p) { return p == "diff"; });
+            }
             for (const std::string& pic : pics) {
                 // Only names the judge wrote, from its own folder.
                 const fs::path pf = mdir / "verdicts" / cname / (pic + ".png");

@@ -42,6 +42,13 @@ inline int shown_width(int natural, int about, int min_times = 1) {
     return natural * std::max(1, std::min(times, 1024 / natural));
 }
 
+// What a checkpoint of numbers shows instead of its pictures (Verdict::numbers_only: its
+// expected picture is one flat color that both main images match, so they would show a blank
+// canvas, enlarged).
+inline constexpr const char* kNumbersOnlyNote =
+    "<p class=\"numbers-only\">Numbers only: this checkpoint judges the numbers your functions return, so "
+    "there is no picture to show.</p>\n";
+
 // Marks the page once every picture has loaded: data-broken counts the ones that did not (the
 // project's tests read it through headless Chromium). The only script on these pages.
 inline constexpr const char* kPictureLoadMarker =

@@ -117,8 +117,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         // of numbers has no picture of its own: its blank canvas and expected image are left out.
         std::vector<std::string> names;
         if (r.numbers_only) {
-            html << "<p class=\"numbers-only\">Numbers only: this checkpoint judges the numbers your functions "
-                    "return, so there is no picture to show.</p>\n";
+            html << cp::kNumbersOnlyNote;
         } else {
             names = {"actual", "expected", "diff"};
         }

@@ -1488,6 +1488,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             if (b == 0) {
                 topic = "needs";
                 why = " [needs]: this scene does not need that stage, so it must not run";
+                if (name == "lod_computed") why += " (the level of detail is computed for mip filters only)";
             } else if (work && a > b) {
                 topic = "needs";
                 why = ": more than this scene needs";

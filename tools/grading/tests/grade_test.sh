@@ -446,12 +446,13 @@ PY
     ;;
   report_html)
     # The per-submission page in a browser: a section per checkpoint with the student's picture,
-    # every picture loads (they are inline), and a failing checkpoint shows its findings.
+    # or, for a checkpoint of numbers (m3.matrix_ops), the "Numbers only" note instead of its blank
+    # canvas; every picture loads (they are inline), and a failing checkpoint shows its findings.
     browser=$(command -v chromium || command -v chromium-browser || true)
     [ -n "$browser" ] || { echo "skipped: chromium is not installed"; exit 77; }
     make_submission "$work/sub" "$build/checkpoints/generated/m1/bug_wrong_octants.cpp"
-    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1,m2 \
-      --only m1.octant_1,m1.octant_3,m1.clip_one_edge,m2.top_left "$work/sub" >"$work/log" 2>&1 ||
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1,m2,m3 \
+      --only m1.octant_1,m1.octant_3,m1.clip_one_edge,m2.top_left,m3.matrix_ops "$work/sub" >"$work/log" 2>&1 ||
       { cat "$work/log"; fail "grading failed"; }
     page=$work/out/report.html
     dom=$("$browser" --headless --no-sandbox --disable-gpu --virtual-time-budget=5000 --dump-dom "file://$page" 2>/dev/null)
@@ -460,8 +461,15 @@ PY
     sections=$(grep -o '<section id="[^"]*"' <<<"$dom" | wc -l)
     actuals=$(grep -o '<img alt="actual"' <<<"$dom" | wc -l)
     broken=$(grep -o 'data-broken="[0-9]*"' <<<"$dom" | grep -o '[0-9]*' || true)
-    [ "$sections" = 4 ] || fail "$sections sections for 4 checkpoints"
-    [ "$actuals" = 4 ] || fail "$actuals of 4 sections show the student's picture"
+    [ "$sections" = 5 ] || fail "$sections sections for 5 checkpoints"
+    [ "$actuals" = 4 ] || fail "$actuals of the 4 picture checkpoints' sections show the student's picture"
+    # The checkpoint of numbers: the note, and no picture at all (its blank canvas, expected
+    # image and diff are left out).
+    numbers=$(sed -n '/<section id="m3-m3.matrix_ops"/,/<\/section>/p' <<<"$dom")
+    grep -q 'class="numbers-only">Numbers only' <<<"$numbers" || fail "m3.matrix_ops has no numbers-only note"
+    if grep -q '<img' <<<"$numbers"; then fail "m3.matrix_ops, a checkpoint of numbers, shows a picture"; fi
+    if grep -q 'image error' <<<"$numbers"; then fail "m3.matrix_ops, a checkpoint of numbers, reports an image error"; fi
+    [ "$(grep -o 'class="numbers-only"' <<<"$dom" | wc -l)" = 1 ] || fail "a numbers-only note on a picture checkpoint"
     [ "${broken:-x}" = 0 ] || fail "pictures did not load (data-broken=${broken:-missing})"
     grep -q 'octant' <<<"$dom" || fail "the failing checkpoint's findings are not on the page"
     ;;
