@@ -519,7 +519,9 @@ int cmd_report(const std::vector<std::string>& args) {
                  << html_escape(join(v.value("concepts", std::vector<std::string>{}), ", ")) << "</td><td>"
                  << std::fixed << std::setprecision(3) << v.value("student_ms", 0.0) << "</td><td>"
                  << v.value("reference_ms", 0.0) << "</td><td>"
-                 << (v.value("has_metrics", false) ? std::to_string(v["student"].value("differing_pixels", 0LL)) : "")
+                 << (v.value("has_metrics", false) && !v.value("numbers_only", false)
+                         ? std::to_string(v["student"].value("differing_pixels", 0LL))
+                         : "")
                  << "</td></tr>\n";
             rows.unsetf(std::ios::fixed);
             sections << "<section id=\"" << html_escape(m + "-" + cname) << "\"><h3>" << html_escape(m + " " + cname)

@@ -78,8 +78,14 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         html << "<tr><td><a href=\"#" << html_escape(r.id) << "\">" << html_escape(r.id) << "</a><td class=\"" << html_escape(r.status)
              << "\">" << html_escape(r.status);
         if (r.has_metrics) {
-            html << std::fixed << std::setprecision(3) << "<td>" << r.student.differing_pixels << "<td>"
-                 << r.student.mean_abs_error << "<td>" << r.student_ms << "<td>" << r.reference_ms;
+            // A checkpoint of numbers has no picture: no pixel can differ, so none is counted.
+            html << std::fixed << std::setprecision(3);
+            if (r.numbers_only) {
+                html << "<td>-<td>-";
+            } else {
+                html << "<td>" << r.student.differing_pixels << "<td>" << r.student.mean_abs_error;
+            }
+            html << "<td>" << r.student_ms << "<td>" << r.reference_ms;
         } else {
             html << "<td>-<td>-<td>-<td>-";
         }
@@ -236,7 +242,10 @@ int main(int argc, char** argv) {
         failed += r.status == "fail";
         crashed += r.status != "pass" && r.status != "fail";
         std::cout << std::left << std::setw(28) << r.id << std::setw(8) << result << std::right;
-        if (r.has_metrics) {
+        if (r.has_metrics && r.numbers_only) {
+            std::cout << std::setw(12) << "-" << std::setw(10) << "-" << std::fixed << std::setprecision(3)
+                      << std::setw(11) << r.student_ms << std::setw(11) << r.reference_ms;
+        } else if (r.has_metrics) {
             std::cout << std::setw(12) << r.student.differing_pixels << std::setw(10) << std::fixed
                       << std::setprecision(3) << r.student.mean_abs_error << std::setw(11)
                       << r.student_ms << std::setw(11) << r.reference_ms;
