@@ -343,7 +343,9 @@ struct FillState {
 // and each light (blinn_phong, times shadow_factor for a light with a map, both with that one
 // normal, skipped where dot(N, L) <= 0); then m4::to_color and the depth test m4::depth_passes
 // decide the write.
-// Counts into stats.
+// Counts into stats what it does (fragments, shaded, texture_samples, ...). triangles_drawn is
+// counted once per fan triangle, either here as fill_triangle is entered or by draw_scene as it
+// passes one (the reference does the latter), not both.
 void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const FillState& state, Stats& stats);
 
 // TODO 9: draws every object into the frame (already cleared by m4::clear_frame with a depth
