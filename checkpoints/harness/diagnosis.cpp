@@ -253,11 +253,16 @@ std::string diagnosis_for(const std::string& milestone, const std::string& id, c
         // another TODO would contradict it. Other findings may name several TODOs a bug touches
         // (a winding bug shows in both fills), so they filter nothing.
         std::set<int> blamed;
+        // Their concepts too: such a finding is the prerequisite checkpoint's own, which tells
+        // the mistake from the numbers; a known bug of another concept only looks alike (adding
+        // the shadow bias draws much what reversing the comparison draws).
+        std::set<std::string> prerequisite_topics;
         for (const std::string& f : findings) {
             const std::size_t at = f.find("fix TODO");
             if (at == std::string::npos) continue;
             const std::set<int> t = todo_numbers(f.substr(at + 4, f.find(" first", at) - (at + 4)));
             blamed.insert(t.begin(), t.end());
+            if (f.size() > 2 && f[0] == '[' && f.find(']') != std::string::npos) prerequisite_topics.insert(f.substr(1, f.find(']') - 1));
         }
         std::string out;
         for (const BugPicture* p : named) {
@@ -268,6 +273,7 @@ std::string diagnosis_for(const std::string& milestone, const std::string& id, c
                 std::none_of(own.begin(), own.end(), [&](int t) { return blamed.count(t) > 0; })) {
                 continue;
             }
+            if (!prerequisite_topics.empty() && !b->says.empty() && prerequisite_topics.count(b->says) == 0) continue;
             out += out.empty() ? "your picture matches what happens with a known bug (" : " Or with the known bug (";
             out += b->name + "): " + b->summary;
             if (!out.empty() && out.back() != '.') out += '.';
