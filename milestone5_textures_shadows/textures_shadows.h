@@ -266,9 +266,11 @@ struct ShadowMap {
 };
 // The shadow factor (see Shadows above) at world point p with unit normal n, for a light of
 // direction `direction` whose map is `map`: 1 when lit, 0 when shadowed, the lit fraction of the
-// 3x3 texels with pcf. n is the shading normal, the one blinn_phong gets (after the normal map,
-// if any): the slope bias follows it. fill_triangle never asks where dot(n, -direction) <= 0,
-// so no checkpoint tests the answer there.
+// 3x3 texels with pcf; the slope bias follows n. Which normal fill_triangle passes is free: the
+// shading normal blinn_phong gets (after the normal map, the reference's choice) or the
+// interpolated one before the map (the geometry's slope, which is what the depth map has).
+// fill_triangle never asks where the shading normal has dot(n, -direction) <= 0, so no
+// checkpoint tests the answer there.
 double shadow_factor(const ShadowMap& map, Vec3 p, Vec3 n, Vec3 direction, const ShadowSettings& settings);
 
 // ---- TODO 5 and TODO 9: the textured, lit, shadowed pipeline ----
@@ -340,9 +342,9 @@ struct FillState {
 // from, and level_of_detail on level 0's size, for mip filters only); unlit materials stop
 // there; lit ones normalize the normal, perturb it by the normal map if any (reading the map
 // where state.tangent is not valid is free, see Only what a scene needs above), and add ambient
-// and each light (blinn_phong, times shadow_factor for a light with a map, both with that one
-// normal, skipped where dot(N, L) <= 0); then m4::to_color and the depth test m4::depth_passes
-// decide the write.
+// and each light (blinn_phong with that normal, times shadow_factor for a light with a map,
+// whose n is free, see there; skipped where dot(N, L) <= 0); then m4::to_color and the depth
+// test m4::depth_passes decide the write.
 // Counts into stats what it does (fragments, shaded, texture_samples, ...). triangles_drawn is
 // counted once per fan triangle, either here as fill_triangle is entered or by draw_scene as it
 // passes one (the reference does the latter), not both.

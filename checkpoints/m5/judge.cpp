@@ -347,6 +347,7 @@ enum class Lookup {
     kBiasAdded,   // d + bias / (2r)
     kWorldBias,   // d - bias, the bias in world units not converted to depth
     kUncapped,    // tan(theta) not capped at 10
+    kUnflipped,   // the row from NDC y as it is, without to_screen's flip
 };
 
 // The shadow factor on the tiny map.
@@ -354,7 +355,8 @@ double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::k
     const M4 m = t_light(map.direction, map.center, map.radius);
     const Vec4 clip = mul(m, Vec4{c.p.x, c.p.y, c.p.z, 1});
     const double res = map.resolution;
-    const double x = (clip.x / clip.w + 1) / 2 * res, y = (1 - clip.y / clip.w) / 2 * res, z = clip.z / clip.w;
+    const double x = (clip.x / clip.w + 1) / 2 * res, z = clip.z / clip.w;
+    const double y = mode == Lookup::kUnflipped ? (clip.y / clip.w + 1) / 2 * res : (1 - clip.y / clip.w) / 2 * res;
     const double d = (z + 1) / 2;
     const double bias = t_bias(map, c, mode != Lookup::kUncapped);
     const double test = mode == Lookup::kBiasAdded   ? d + bias / (2 * map.radius)
@@ -390,14 +392,20 @@ void judge_wrap(Ctx& c) {
             if (mine == want) continue;
             std::string why;
             const double trunc = std::fmod(k.i, double(k.mode == Wrap::kMirroredRepeat ? 2 * k.n : k.n));
+            // Mirrored repeat turning m in [n, 2n) into 2n - m instead of 2n - 1 - m.
+            const double period = 2.0 * k.n, m = std::isfinite(k.i) ? std::fmod(std::fmod(k.i, period) + period, period) : 0;
+            const bool mirror_off_by_one = k.mode == Wrap::kMirroredRepeat && m >= k.n && mine == period - m;
             if (!std::isfinite(k.i)) {
                 why = ": a non-finite index gives 0 (never a crash, never an index out of range)";
+            } else if (mirror_off_by_one) {
+                why = ": mirrored repeat maps m = i mod 2n in [n, 2n) to 2n - 1 - m (the edge texel is read twice at "
+                      "the turn, as n - 1 then n - 1 again), not 2n - m";
             } else if (k.i < 0 && k.mode != Wrap::kClampToEdge && (mine == trunc || mine == -trunc)) {
                 why = ": std::fmod (and %) truncate toward zero and keep the sign of i, so -1 mod n is -1; add n (2n "
                       "for mirrored repeat) when the result is negative, so -1 becomes n - 1";
             } else if (std::abs(k.i) > 1e15) {
                 why = ": a huge index must wrap exactly: std::fmod is exact for any finite double (a cast to an "
-                      "integer type overflows)";
+                      "integer type overflows, and i - n floor(i / n) rounds once |i| passes 2^52)";
             }
             out.add("wrap", "TODO 1: wrap_index(" + num(k.i) + ", " + std::to_string(k.n) + ", " + wrap_name(k.mode) +
                                 ") gave " + num(mine) + ", expected " + num(want) + why);
@@ -856,6 +864,9 @@ void judge_shadow(Ctx& c) {
             topic = "shadow bias";
             why = ": tan(theta) = " + num(round4((t_bias(map, k, false) - k.constant_bias) / k.slope_bias)) +
                   " here was not capped: bias = constant + slope * min(tan(theta), 10) = " + num(round4(bias)) + " world units";
+        } else if (fits(Lookup::kUnflipped) && close(mine, t_shadow(map, k, Lookup::kUnflipped), 1e-9)) {
+            why = ": the map is read upside down: the texel's row is floor(y) of m3::to_screen, which flips NDC y "
+                  "(y = (1 - y_ndc) / 2 * resolution, row 0 at the top, as the depth pass drew it)";
         } else if (i == 2) {
             topic = "shadow bias";
             why = ": the point is 0.001 below the floor's stored depth; the constant bias (0.02 world units, 0.02 / (2r) in "

@@ -809,7 +809,8 @@ std::vector<WrapCase> wrap_cases() {
     std::vector<WrapCase> cases;
     const double is[] = {0, 3, 4, 5, 9, -1, -4, -5, -6, -9, 13, 1e300, -1e300, 9007199254740993.0, -7.0e15, kNaN, kInf, -kInf};
     for (int mode = 0; mode < 3; ++mode) {
-        for (int n : {4, 5}) {
+        // 7 too: i - n floor(i / n) is exact for i below 2^52 only; at 1e300 it misses 1e300 mod 7 = 1.
+        for (int n : {4, 5, 7}) {
             for (double i : is) cases.push_back({i, n, static_cast<Wrap>(mode)});
         }
         cases.push_back({0, 1, static_cast<Wrap>(mode)});
@@ -1115,6 +1116,10 @@ std::vector<ShadowCase> shadow_cases() {
         {{0.5, 0, 0.5}, up, 0.02, 0.02, true},        // PCF at (1, 2): 5 of 9 lit
         {{-0.5, 0, -0.5}, up, 0, 0, false},           // no bias at all, under the occluder (2, 1): shadowed
         {{1.5, -0.05, 0.5}, up, 0.02, 0.02, false},   // 0.05 below the floor, beyond the bias 0.02: shadowed
+        // The occluder is not symmetric: a map read upside down or mirrored (a row from NDC y
+        // without to_screen's flip) swaps one of these two.
+        {{0.5, 0, 0.5}, up, 0.02, 0.02, false},       // under the occluder (1, 2): shadowed
+        {{-0.5, 0, 0.5}, up, 0.02, 0.02, false},      // beside it, (2, 2): lit
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m5.shadow_lookup");
