@@ -709,8 +709,17 @@ void judge_phong(Ctx& c) {
             why = ": dot(N, L) = " + num(cl) + " <= 0, so this light adds NOTHING: no diffuse and no specular either";
         } else if (same3(mine, Vec3{}, 1e-12)) {
             why = ": blinn_phong returned nothing";
+        } else if (cl > 0 && same3(mine, mul(k.base, k.intensity) * cl + mul(k.specular, k.intensity) * std::pow(cl, k.shininess), 1e-9)) {
+            why = ": the specular term was raised from dot(N, L); it is max(0, dot(N, H))^shininess, H = normalize(L + V), "
+                  "the halfway vector between the directions to the light and to the eye";
         } else if (raster::length(k.normal) != 1 || raster::length(k.to_eye) != 1 || raster::length(k.to_light) != 1) {
             why = ": normalize N, V and L first (here they are not of length 1; a zero one makes the light add nothing)";
+        }
+        if (why.empty() && cl > 0) {
+            // Which half is off: the diffuse part is base * c * I, the rest must be the specular term.
+            const Vec3 diffuse = mul(k.base, k.intensity) * cl, spec = want - diffuse;
+            why = ": expected the diffuse part base * dot(N, L) * I = " + str(diffuse) + " plus the specular part " + str(spec) +
+                  " (specular * max(0, dot(N, H))^shininess * I); your result minus that diffuse part is " + str(mine - diffuse);
         }
         out.add(topic, "TODO 6: blinn_phong(base " + str(k.base) + ", specular " + str(k.specular) + ", shininess " +
                            num(k.shininess) + ", N " + str(k.normal) + ", V " + str(k.to_eye) + ", L " + str(k.to_light) +
