@@ -1507,8 +1507,13 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             if (ok) continue;
             if (name == "fragments" || name == "shaded") fragments_off = true;
             if (per_fragment && fragments_off) continue;
-            std::string why, topic = st.topic;
+            std::string why, topic = st.topic, todo = st.todo;
             const bool work = name != "fragments" && name != "shaded" && name != "triangles_drawn";
+            // The normal maps of the panel (lit items only read them).
+            std::set<int> normal_maps;
+            for (const Item& it : panel.items) {
+                if (it.material.normal_map >= 0 && it.material.lit) normal_maps.insert(it.material.normal_map);
+            }
             if (b == 0) {
                 topic = "needs";
                 why = " [needs]: this scene does not need that stage, so it must not run";
@@ -1518,6 +1523,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 why = ": more than this scene needs";
                 if (name == "lod_computed") why += " (the level of detail is computed for mip filters only)";
                 if (name == "mipmap_builds") why += " (one pyramid per texture, built the first time a mip filter reads a level above 0; none for lambda <= 0)";
+
                 if (name == "shadow_passes" || name == "shadow_texels") why += " (a depth pass only for a light that casts shadows)";
                 if (name == "shadow_lookups" || name == "specular_terms") why += " (none where dot(N, L) <= 0)";
             } else if (name == "shaded" && a > b) {
@@ -1531,7 +1537,13 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             } else if (name == "shadow_texels") {
                 why = ": each shadow pass allocates resolution^2 keys";
             }
-            c.add(topic, std::string(st.todo) + ": " + num(a) + " " + st.what + where + ", expected " +
+            // Up to one extra pyramid per normal map: the map read through sample() with a mip filter.
+            if (name == "mipmap_builds" && a > b && a - b <= double(normal_maps.size())) {
+                todo = "TODO 5";  // fill_triangle's call, not sample()
+                why += "; a normal map is read with sample_bilinear on its level 0, never through sample(), so it never "
+                       "gets a pyramid";
+            }
+            c.add(topic, todo + ": " + num(a) + " " + st.what + where + ", expected " +
                              (st.exact || b == 0 ? num(b) : "about " + num(b)) + why);
         }
         if (!sized) continue;
