@@ -186,8 +186,8 @@ int cmd_ids(const std::string& m) {
 
 // What of the student's artifacts the trusted side can check (tools/grading/README.md, "What the
 // render reports about itself"): the pictures and the answers, not the counts that only the
-// render process itself measures. Those (writes outside the image, the runaway flag, milestone
-// 4's stage counts and buffer capacities) are replaced by the reference's; a checkpoint that
+// render process itself measures. Those (writes outside the image, the runaway flag, milestones
+// 4 and 5's stage counts, milestone 4's buffer capacities) are replaced by the reference's; a checkpoint that
 // fails only on them passes in grading, and what they said is shown as advice, for no points.
 cp::Artifacts verifiable_part(const cp::Artifacts& student, const cp::Artifacts& reference) {
     cp::Artifacts a = student;

@@ -16,6 +16,10 @@ std::string num(double v) {
     return s.str();
 }
 
+std::string plural(double n, const std::string& one, const std::string& many) {
+    return num(n) + " " + (n == 1 ? one : many.empty() ? one + "s" : many);
+}
+
 double get(const Values& v, const std::string& key) {
     const auto it = v.find(key);
     return it == v.end() ? std::nan("") : it->second;

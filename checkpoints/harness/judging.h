@@ -20,6 +20,10 @@ using Values = std::map<std::string, double>;
 
 // v with 10 significant digits; |v| < 1e-12 prints as 0.
 std::string num(double v);
+// n as num() prints it and a noun, singular for exactly 1: plural(1, "level") is "1 level",
+// plural(3, "level") "3 levels", plural(0.5, "level") "0.5 levels"; `many` where the plural is
+// not the noun and "s": plural(4, "vertex", "vertices").
+std::string plural(double n, const std::string& one, const std::string& many = "");
 // The value stored under key, NaN when there is none.
 double get(const Values& v, const std::string& key);
 // a within tol of b, relative to max(1, |b|); NaN only matches NaN.

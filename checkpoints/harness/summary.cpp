@@ -63,8 +63,18 @@ nlohmann::json json_metrics(const raster::ImageMetrics& m) {
 }
 
 
+// `p` as a link from a page in `page_dir`: relative to it, so that the page and its pictures can
+// move together (the build folder copied or mounted elsewhere); `p` itself when no relative path
+// leads there (another drive).
+std::string page_relative(const std::filesystem::path& p, const std::filesystem::path& page_dir) {
+    std::error_code ec;
+    const std::filesystem::path rel = std::filesystem::relative(p, page_dir, ec);
+    return ec || rel.empty() ? p.generic_string() : rel.generic_string();
+}
+
 void write_html(const std::vector<cp::Record>& records, const std::string& path) {
     std::ofstream html(path);
+    const std::filesystem::path page_dir = std::filesystem::absolute(std::filesystem::path(path)).parent_path();
     html << "<!doctype html><meta charset=utf-8><title>Checkpoints</title>\n"
             "<style>body{font-family:sans-serif;background:#1e1e1e;color:#ddd;margin:2em}"
             "a{color:#8cf}table{border-collapse:collapse}td,th{padding:4px 10px;border-bottom:1px solid #444;text-align:left}"
@@ -92,16 +102,14 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         html << "<td>" << html_escape(r.todos) << "<td>" << html_escape(r.concepts) << "</tr>\n";
     }
     html << "</table>\n";
-    bool any_measure = false;
-    for (const cp::Record& r : records) {
-        for (const auto& [name, v] : r.measures) {
-            if (!any_measure) html << "<h2>Measured error against run time</h2>\n<table><tr><th>checkpoint<th>measure<th>value<th>your ms<th>reference ms</tr>\n";
-            any_measure = true;
-            html << "<tr><td>" << html_escape(r.id) << "<td>" << html_escape(name) << "<td>" << measure_text(v)
-                 << "<td>" << std::setprecision(3) << r.student_ms << "<td>" << r.reference_ms << "</tr>\n";
-        }
+    // The measures (a row per checkpoint and measure, over a hundred for a whole run) come after
+    // every checkpoint's section, so that the first screens show the table and the failures.
+    const bool any_measure = std::any_of(records.begin(), records.end(),
+                                         [](const cp::Record& r) { return !r.measures.empty(); });
+    if (any_measure) {
+        html << "<p>Each checkpoint's findings and pictures follow; the <a href=\"#measures\">measured error "
+                "against run time</a> is at the end of the page.</p>\n";
     }
-    if (any_measure) html << "</table>\n";
     for (const cp::Record& r : records) {
         html << "<h2 id=\"" << html_escape(r.id) << "\">" << html_escape(r.id) << ": " << html_escape(r.title)
              << "</h2>\n<p class=\"" << html_escape(r.status) << "\">" << html_escape(r.status) << " "
@@ -151,12 +159,25 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
             const int natural = png_width_of(p);
             const int width = name == "error_vs_time" ? (natural > 0 ? natural : 640)
                                                       : cp::shown_width(natural, 320, name == "diff" ? 2 : 1);
-            html << "<figure style=\"width:" << width + 2 << "px\"><a href=\"" << html_escape(p.string())
-                 << "\"><img alt=\"" << html_escape(r.id + " " + name) << "\" width=\"" << width << "\" src=\""
-                 << html_escape(p.string()) << "\"></a><figcaption>"
+            const std::string src = html_escape(page_relative(p, page_dir));
+            html << "<figure style=\"width:" << width + 2 << "px\"><a href=\"" << src << "\"><img alt=\""
+                 << html_escape(r.id + " " + name) << "\" width=\"" << width << "\" src=\"" << src
+                 << "\"></a><figcaption>"
                  << html_escape(cp::picture_caption(r.milestone, name)) << "</figcaption></figure>";
         }
         html << "</p>\n";
+    }
+    if (any_measure) {
+        // Not an <h2 id=...>: those are the checkpoints' sections.
+        html << "<section id=\"measures\"><h2>Measured error against run time</h2>\n<table><tr><th>checkpoint"
+                "<th>measure<th>value<th>your ms<th>reference ms</tr>\n";
+        for (const cp::Record& r : records) {
+            for (const auto& [name, v] : r.measures) {
+                html << "<tr><td>" << html_escape(r.id) << "<td>" << html_escape(name) << "<td>" << measure_text(v)
+                     << "<td>" << std::setprecision(3) << r.student_ms << "<td>" << r.reference_ms << "</tr>\n";
+            }
+        }
+        html << "</table></section>\n";
     }
     html << cp::diagnosis_footer_html(records);
     html << cp::kPictureLoadMarker;

@@ -25,6 +25,7 @@ namespace {
 using cp::close;
 using cp::get;
 using cp::num;
+using cp::plural;
 using cp::same3;
 using cp::str;
 using cp::Values;
@@ -141,7 +142,7 @@ void judge_group(Group g, Ctx& c) {
         case Group::kClearFrame: {
             if (get(v, "depth.size") != 35 || get(v, "depth.not_clear") != 0) {
                 c.add("depth clear", "TODO 2: after clear_frame of a 7x5 frame with depth, the buffer held " +
-                                         num(get(v, "depth.size")) + " keys, " + num(get(v, "depth.not_clear")) +
+                                         plural(get(v, "depth.size"), "key") + ", " + num(get(v, "depth.not_clear")) +
                                          " of them not kClearKey; expected 35 keys, all kClearKey");
             }
             if (get(v, "again.key4") < 0) {
@@ -154,11 +155,12 @@ void judge_group(Group g, Ctx& c) {
             if (get(v, "format") != 2) c.add("depth clear", "TODO 2: clear_frame must set frame.format");
             if (get(v, "color.wrong") != 0 || get(v, "color.width") != 7) {
                 c.add("depth clear", "TODO 2: clear_frame must fill every pixel of frame.color with the background "
-                                     "and keep its size (" + num(get(v, "color.wrong")) + " pixels were not)");
+                                     "and keep its size (" + plural(get(v, "color.wrong"), "pixel") +
+                                     (get(v, "color.wrong") == 1 ? " was not)" : " were not)"));
             }
             if (get(v, "off.capacity") != 0) {
-                c.add("needs", "TODO 2: clear_frame without a depth test kept " + num(get(v, "off.capacity")) +
-                                   " keys of memory: release it (a vector keeps its capacity after clear())");
+                c.add("needs", "TODO 2: clear_frame without a depth test kept " + plural(get(v, "off.capacity"), "key") +
+                                   " of memory: release it (a vector keeps its capacity after clear())");
             }
             break;
         }
@@ -341,14 +343,14 @@ void judge_group(Group g, Ctx& c) {
                         }
                     }
                     if (!touching.empty()) {
-                        c.add("inside test", "TODO 7b: " + what + " gave " + std::to_string(n) + " vertices, expected " +
+                        c.add("inside test", "TODO 7b: " + what + " gave " + plural(double(n), "vertex", "vertices") + ", expected " +
                                                  std::to_string(rn) + ". The vertex " + touching +
                                                  " lies exactly on a plane (d = 0), and a vertex on a plane is INSIDE it: "
                                                  "keep a when da >= 0 (not da > 0) and add a new vertex when (da >= 0) != "
                                                  "(db >= 0). The edge between it and an outside neighbour then adds a new "
                                                  "vertex at the very same point, which the count includes");
                     } else {
-                        c.add("clipping", "TODO 7b: " + what + " gave " + std::to_string(n) + " vertices, expected " +
+                        c.add("clipping", "TODO 7b: " + what + " gave " + plural(double(n), "vertex", "vertices") + ", expected " +
                                               std::to_string(rn));
                     }
                     continue;
@@ -607,8 +609,8 @@ void judge_shading_chart(Ctx& c, const raster::Image& mine, const cp::Artifacts&
             theirs.labels.push_back("");
             if (err > ref_err + 0.5) {
                 const char* topic = modes[m] == Shade::kFlat ? "flat shading" : modes[m] == Shade::kGouraud ? "gouraud" : "per-pixel normals";
-                c.add(topic, "TODO 9: the " + what + " sphere is " + num(std::round(err * 100) / 100) +
-                                 " levels from the perfect sphere on average, the reference's " +
+                c.add(topic, "TODO 9: the " + what + " sphere is " + plural(std::round(err * 100) / 100, "level") +
+                                 " from the perfect sphere on average, the reference's " +
                                  num(std::round(ref_err * 100) / 100));
             }
         }
@@ -768,10 +770,10 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         // Only what a scene needs: the depth buffer, read back by the render half.
         const double cap = get(c.mine, key + ".depth_capacity"), ref_cap = get(c.ref, key + ".depth_capacity");
         if (ref_cap == 0 && cap != 0) {
-            c.add("needs", "TODO 2: this scene does not depth-test, yet the frame holds " + num(cap) +
-                               " depth keys of memory" + where);
+            c.add("needs", "TODO 2: this scene does not depth-test, yet the frame holds " + plural(cap, "depth key") +
+                               " of memory" + where);
         } else if (ref_cap > 0 && cap < double(panel.w) * panel.h) {
-            c.add("depth clear", "TODO 2: the depth buffer has room for " + num(cap) + " keys, the frame has " +
+            c.add("depth clear", "TODO 2: the depth buffer has room for " + plural(cap, "key") + ", the frame has " +
                                      std::to_string(panel.w * panel.h) + " pixels" + where);
         }
         // The counts.
@@ -918,7 +920,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         if (diff > 0) {
             c.add(topic == std::string("tie rule") ? "tie rule" : "depth test",
                   "TODOs 2 and 8: the same triangles drawn in another order give another picture (" +
-                      std::to_string(diff) + " pixels differ between panel " + std::to_string(p + 1) + " and panel " +
+                      plural(double(diff), "pixel") + (diff == 1 ? " differs" : " differ") + " between panel " +
+                      std::to_string(p + 1) + " and panel " +
                       std::to_string(q + 1) +
                       "): the depth test must decide every pixel (depth_passes, TODO 2), a fragment that fails must "
                       "write nothing, not even its depth, and an exact tie must go through depth_passes too "
@@ -937,8 +940,8 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
     if (!expected.empty()) j.tolerance = tolerance_for(expected);
     Ctx c{s, artifacts.values, reference.values, j};
     if (artifacts.stray_writes > 0) {
-        c.add("rasterizer", "TODO 8: " + std::to_string(artifacts.stray_writes) +
-                                " write(s) outside the image: clamp the bounding box to the image");
+        c.add("rasterizer", "TODO 8: " + plural(double(artifacts.stray_writes), "write") +
+                                " outside the image: clamp the bounding box to the image");
     }
     // A function the reference draws with that drew nothing (most often draw_mesh, TODO 9, not
     // written yet): the harness names it, and every finding about the picture (counts that

@@ -27,6 +27,7 @@ namespace {
 
 using cp::get;
 using cp::num;
+using cp::plural;
 using cp::str;
 using cp::Values;
 using cp::vec3;
@@ -91,7 +92,7 @@ struct Limited {
         }
     }
     ~Limited() {
-        if (more > 0) c.add(topic_of_rest, "TODO " + todo + ": " + std::to_string(more) + " more case(s) of " + what + " are wrong too");
+        if (more > 0) c.add(topic_of_rest, "TODO " + todo + ": " + plural(more, "more case") + " of " + what + (more == 1 ? " is" : " are") + " wrong too");
     }
     std::string topic_of_rest = "pipeline", todo = "9";
 };
@@ -482,15 +483,15 @@ void judge_mipmaps(Ctx& c) {
         for (const LevelData& l : want) sizes += (sizes.empty() ? "" : ", ") + size_name(l);
         const double levels = get(v, key + ".levels");
         if (levels != double(want.size())) {
-            c.add("mipmap", "TODO 3: build_mipmaps on " + name + " made " + num(levels) + " levels, expected " +
+            c.add("mipmap", "TODO 3: build_mipmaps on " + name + " made " + plural(levels, "level") + ", expected " +
                                 std::to_string(want.size()) + " (" + sizes + "): each level max(1, floor(w / 2)) by max(1, "
                                 "floor(h / 2)), down to and including 1x1");
             continue;
         }
         if (get(v, key + ".mipmapped") != 1) c.add("mipmap", "TODO 3: build_mipmaps must set texture.mipmapped");
         if (get(v, key + ".again.levels") != double(want.size())) {
-            c.add("mipmap", "TODO 3: build_mipmaps called a second time on " + name + " left " + num(get(v, key + ".again.levels")) +
-                                " levels: it replaces the levels above 0, it does not add more");
+            c.add("mipmap", "TODO 3: build_mipmaps called a second time on " + name + " left " +
+                                plural(get(v, key + ".again.levels"), "level") + ": it replaces the levels above 0, it does not add more");
         }
         bool reported = false;
         for (std::size_t k = 0; k < want.size() && !reported; ++k) {
@@ -498,7 +499,7 @@ void judge_mipmaps(Ctx& c) {
             const LevelData& l = want[k];
             if (get(v, lk + ".w") != l.width || get(v, lk + ".h") != l.height || get(v, lk + ".n") != double(l.texels.size())) {
                 c.add("mipmap", "TODO 3: level " + std::to_string(k) + " of " + name + " is " + num(get(v, lk + ".w")) + "x" +
-                                    num(get(v, lk + ".h")) + " with " + num(get(v, lk + ".n")) + " texels, expected " + size_name(l) +
+                                    num(get(v, lk + ".h")) + " with " + plural(get(v, lk + ".n"), "texel") + ", expected " + size_name(l) +
                                     " (the pyramid: " + sizes + ")");
                 reported = true;
                 break;
@@ -541,7 +542,7 @@ void judge_mipmaps(Ctx& c) {
     }
     if (get(v, "empty.levels") != 1 || get(v, "empty.mipmapped") != 0) {
         c.add("mipmap", "TODO 3: build_mipmaps on a texture with no texels must leave it as it is (1 level, mipmapped "
-                        "false); it made " + num(get(v, "empty.levels")) + " levels");
+                        "false); it made " + plural(get(v, "empty.levels"), "level"));
     }
     if (get(v, "none.levels") != 0) {
         c.add("mipmap", "TODO 3: build_mipmaps on a texture with no levels at all must leave it as it is");
@@ -1347,8 +1348,8 @@ void judge_filter_chart(Ctx& c, const raster::Image& mine, const cp::Artifacts& 
         theirs.labels.push_back("");
         // Within 8% of the reference's error, and never more than half a level beyond it.
         if (err > ref_err * 1.08 + 0.5) {
-            c.add("filter", "TODOs 4 and 5: the " + name + " panel is " + num(round2(err)) +
-                                " levels from the 16x supersampled bilinear truth on average, the reference's " +
+            c.add("filter", "TODOs 4 and 5: the " + name + " panel is " + plural(round2(err), "level") +
+                                " from the 16x supersampled bilinear truth on average, the reference's " +
                                 num(round2(ref_err)) + " (allowed: " + num(round2(ref_err * 1.08 + 0.5)) +
                                 "): the level of detail (lambda at the pixel center (x + 0.5, y + 0.5), in texel units of level 0) or the "
                                 "filter's use of it is off");
@@ -1362,22 +1363,23 @@ struct StatInfo {
     const char* name;
     const char* topic;  // when the reference's count is not 0
     const char* todo;
-    const char* what;
+    const char* one;   // what is counted, told of a count of 1
+    const char* what;  // of any other count
     bool exact;
 };
 constexpr StatInfo kStats[] = {
-    {"shadow_passes", "shadow", "TODO 9", "shadow passes", true},
-    {"shadow_texels", "shadow", "TODO 9", "shadow-map texels allocated", true},
-    {"triangles_drawn", "pipeline", "TODO 9", "fan triangles drawn", true},
-    {"fragments", "rasterizer", "TODO 5", "fragments (covered pixel centers)", false},
-    {"shaded", "rasterizer", "TODO 5", "fragments shaded", false},
-    {"texture_samples", "filter", "TODO 5", "texture samples", false},
-    {"lod_computed", "level of detail", "TODO 5", "level-of-detail computations", false},
-    {"mipmap_builds", "mipmap builds", "TODO 4", "pyramids built", true},
-    {"normal_map_samples", "normal map", "TODO 5", "normal-map samples", false},
-    {"tangent_frames", "normal map", "TODO 9", "tangent frames", true},
-    {"specular_terms", "specular", "TODO 5", "specular terms", false},
-    {"shadow_lookups", "shadow", "TODO 5", "shadow lookups", false},
+    {"shadow_passes", "shadow", "TODO 9", "shadow pass", "shadow passes", true},
+    {"shadow_texels", "shadow", "TODO 9", "shadow-map texel allocated", "shadow-map texels allocated", true},
+    {"triangles_drawn", "pipeline", "TODO 9", "fan triangle drawn", "fan triangles drawn", true},
+    {"fragments", "rasterizer", "TODO 5", "fragment (covered pixel center)", "fragments (covered pixel centers)", false},
+    {"shaded", "rasterizer", "TODO 5", "fragment shaded", "fragments shaded", false},
+    {"texture_samples", "filter", "TODO 5", "texture sample", "texture samples", false},
+    {"lod_computed", "level of detail", "TODO 5", "level-of-detail computation", "level-of-detail computations", false},
+    {"mipmap_builds", "mipmap builds", "TODO 4", "pyramid built", "pyramids built", true},
+    {"normal_map_samples", "normal map", "TODO 5", "normal-map sample", "normal-map samples", false},
+    {"tangent_frames", "normal map", "TODO 9", "tangent frame", "tangent frames", true},
+    {"specular_terms", "specular", "TODO 5", "specular term", "specular terms", false},
+    {"shadow_lookups", "shadow", "TODO 5", "shadow lookup", "shadow lookups", false},
 };
 
 // The textures of a panel whose pyramid the header leaves free (see "Only what a scene needs"):
@@ -1543,7 +1545,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 why += "; a normal map is read with sample_bilinear on its level 0, never through sample(), so it never "
                        "gets a pyramid";
             }
-            c.add(topic, todo + ": " + num(a) + " " + st.what + where + ", expected " +
+            c.add(topic, todo + ": " + plural(a, st.one, st.what) + where + ", expected " +
                              (st.exact || b == 0 ? num(b) : "about " + num(b)) + why);
         }
         if (!sized) continue;
@@ -1587,8 +1589,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             const double ref_err = ref_main == ref.images.end() ? err : panel_error(ref_main->second, panel, truth);
             c.j.measures["mean error vs the exact Blinn-Phong spheres, levels (reference " + num(round2(ref_err)) + ")"] = round2(err);
             if (err > ref_err + 0.5) {
-                c.add("specular", "TODO 5: the spheres are " + num(round2(err)) +
-                                      " levels from the exact Blinn-Phong spheres on average, the reference's " +
+                c.add("specular", "TODO 5: the spheres are " + plural(round2(err), "level") +
+                                      " from the exact Blinn-Phong spheres on average, the reference's " +
                                       num(round2(ref_err)) + ": " + theme_advice.substr(theme_advice.find(": ") + 2));
             }
         }
@@ -1614,9 +1616,9 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                               : "uv near 1e7 must give the picture of uv near 0 (repeat): keep uv in double, a float "
                                 "cannot hold the fraction";
         c.add(theme_topic, theme_advice.substr(0, theme_advice.find(": ")) + ": panels " + std::to_string(p + 1) + " and " +
-                               std::to_string(q + 1) + " must agree within " + std::to_string(s.checks.same_tolerance) +
-                               " level(s), but " + std::to_string(diff) + " pixels differ (by up to " + std::to_string(worst) +
-                               "): " + why);
+                               std::to_string(q + 1) + " must agree within " + plural(s.checks.same_tolerance, "level") +
+                               ", but " + plural(double(diff), "pixel") + (diff == 1 ? " differs" : " differ") +
+                               " (by up to " + std::to_string(worst) + "): " + why);
     }
 
     if (differs) {
@@ -1652,8 +1654,8 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
     if (!expected.empty()) j.tolerance = tolerance_for(expected);
     Ctx c{s, artifacts.values, reference.values, j};
     if (artifacts.stray_writes > 0) {
-        c.add("rasterizer", "TODO 5: " + std::to_string(artifacts.stray_writes) +
-                                " write(s) outside the image: clamp the bounding box to the image");
+        c.add("rasterizer", "TODO 5: " + plural(double(artifacts.stray_writes), "write") +
+                                " outside the image: clamp the bounding box to the image");
     }
     // A function the reference draws with that drew nothing (most often draw_scene, TODO 9, not
     // written yet): the harness names it, and every finding about the picture would follow from it.
