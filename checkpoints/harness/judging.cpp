@@ -116,11 +116,15 @@ void judge_pipeline(Judgement& j, const Artifacts& art, const Artifacts& referen
 
 std::optional<Finding> prerequisite_finding(
     const Artifacts& art, const Artifacts& reference, const std::string& prefix, const std::string& checkpoint,
-    const std::function<void(const Values& mine, const Values& ref, Judgement& scratch)>& judge) {
+    const std::function<void(const Values& mine, const Values& ref, Judgement& scratch)>& judge, bool has_picture) {
     const Values mine = values_under(art.values, prefix), ref = values_under(reference.values, prefix);
     Judgement scratch;
     judge(mine, ref, scratch);
     if (scratch.findings.empty()) return std::nullopt;
+    if (!has_picture) {
+        return fix_first(scratch.findings.front(), checkpoint, "these numbers are computed with it",
+                         "these numbers cannot come out right before that checkpoint passes");
+    }
     return fix_first(scratch.findings.front(), checkpoint, "this picture is drawn with it",
                      "this picture cannot come out right before that checkpoint passes");
 }

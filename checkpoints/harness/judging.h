@@ -66,10 +66,11 @@ void judge_pipeline(Judgement& j, const Artifacts& art, const Artifacts& referen
 
 // A prerequisite judged on its own checkpoint's inputs, the values stored under prefix: `judge`
 // files its findings into a scratch judgement. The first of them, told as "fix TODO N first (see
-// <checkpoint>)", or none when it passes.
+// <checkpoint>)", or none when it passes. has_picture: whether the checkpoint asking draws a
+// picture (else its numbers are what the prerequisite computes).
 std::optional<Finding> prerequisite_finding(
     const Artifacts& art, const Artifacts& reference, const std::string& prefix, const std::string& checkpoint,
-    const std::function<void(const Values& mine, const Values& ref, Judgement& scratch)>& judge);
+    const std::function<void(const Values& mine, const Values& ref, Judgement& scratch)>& judge, bool has_picture = true);
 
 // "a, b" of the ids, each once, in their first order: the checkpoints a picture's functions pass.
 std::string join_once(const std::vector<std::string>& ids);

@@ -962,7 +962,8 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
                                                     [&](const Values& mine, const Values& ref, cp::Judgement& scratch) {
                                                         Ctx sub{s, mine, ref, scratch};
                                                         judge_group(g, sub);
-                                                    });
+                                                    },
+                                                    !s.panels.empty());
             if (f) first.push_back(*f);
         }
         return first;

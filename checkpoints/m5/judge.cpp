@@ -1672,7 +1672,8 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
                                                     [&](const Values& mine, const Values& ref, cp::Judgement& scratch) {
                                                         Ctx sub{s, mine, ref, scratch};
                                                         judge_group(g, sub);
-                                                    });
+                                                    },
+                                                    !s.panels.empty());
             if (!f) continue;
             failed.insert(g);
             const auto deps = group_dependencies(g);
