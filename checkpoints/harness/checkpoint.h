@@ -334,7 +334,7 @@ ArtifactRules rules_from_reference(const Artifacts& reference);
 std::string env_or(const char* name, const std::string& fallback);
 
 // Helpers shared by renderers and judges.
-double time_best_of(const std::function<void()>& fn);  // seconds; a few runs for tiny scenes
+double time_best_of(const std::function<void()>& fn, int min_runs = 1);  // seconds; a few runs for tiny scenes
 std::string expected_png_path(const std::string& milestone, const std::string& id);
 
 }  // namespace cp
