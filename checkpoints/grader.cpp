@@ -187,7 +187,8 @@ int cmd_ids(const std::string& m) {
 // What of the student's artifacts the trusted side can check (tools/grading/README.md, "What the
 // render reports about itself"): the pictures and the answers, not the counts that only the
 // render process itself measures. Those (writes outside the image, the runaway flag, milestones
-// 4 and 5's stage counts, milestone 4's buffer capacities) are replaced by the reference's; a checkpoint that
+// 4 and 5's stage counts, the pyramid builds milestone 5's sample() counts through its pointer,
+// milestone 4's buffer capacities) are replaced by the reference's; a checkpoint that
 // fails only on them passes in grading, and what they said is shown as advice, for no points.
 cp::Artifacts verifiable_part(const cp::Artifacts& student, const cp::Artifacts& reference) {
     cp::Artifacts a = student;
@@ -199,7 +200,9 @@ cp::Artifacts verifiable_part(const cp::Artifacts& student, const cp::Artifacts&
     a.stopped_call.stray_writes = 0;
     a.values.erase(cp::kRunawayKey);
     for (auto& [key, value] : a.values) {
-        if (key.find(".stats.") == std::string::npos && key.find("capacity") == std::string::npos) continue;
+        const bool counted = key.find(".stats.") != std::string::npos || key.find("capacity") != std::string::npos ||
+                             key.ends_with(".builds");  // milestone 5's sample() counts its own pyramid builds
+        if (!counted) continue;
         const auto it = reference.values.find(key);
         if (it != reference.values.end()) value = it->second;
     }
