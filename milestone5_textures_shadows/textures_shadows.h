@@ -339,8 +339,9 @@ struct FillState {
 // kClearKey or greater than the stored key is dropped before anything else (not shaded); else the
 // perspective-correct weights (m4::perspective_weights) interpolate uv, normal and world
 // position; the base color is the material's color or sample() of its texture (with lambda from
-// uv_derivatives at the pixel center, from the SNAPPED vertex positions the screen weights come
-// from, and level_of_detail on level 0's size, for mip filters only); unlit materials stop
+// uv_derivatives at the pixel center, from the vertex positions the screen weights come from
+// (snapped; advice: unsnapped ones move lambda by far less than a tolerance), and
+// level_of_detail on level 0's size, for mip filters only); unlit materials stop
 // there; lit ones normalize the normal, perturb it by the normal map if any (reading the map
 // where state.tangent is not valid is free, see Only what a scene needs above), and add ambient
 // and each light (blinn_phong with that normal, times shadow_factor for a light with a map,
