@@ -121,7 +121,9 @@ DiagnosisRates measure_rates(const BugLibrary& lib, const std::vector<raster::Im
 // matching known bug(s) and the lesson section to reread, or "" when none matches (or the
 // library cannot be read: a diagnosis is never worth failing over).
 // `findings` are the checkpoint's printed findings: a known bug of a TODO none of them names
-// is left out, so the line never contradicts them (and says nothing when no bug is left).
+// is left out, so the line never contradicts them (and says nothing when no bug is left); so is
+// a known bug that fails a checkpoint a finding says the student's functions pass ("pass their
+// own checks (m5.shadow_lookup)").
 std::string diagnosis_for(const std::string& milestone, const std::string& id, const raster::Image& picture,
                           const raster::Image& expected, const std::vector<std::string>& findings = {});
 

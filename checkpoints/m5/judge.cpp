@@ -1234,7 +1234,9 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
                     "light_view_projection"}},
         {"m5.pcf", {"pcf", "TODOs 5 and 9: fill_triangle passes the settings (pcf on or off) to shadow_factor"}},
         {"m5.light_behind",
-         {"light behind", "TODO 5: where dot(N, L) <= 0 a light adds nothing: no blinn_phong, no shadow lookup"}},
+         {"light behind", "TODOs 5 and 9: where dot(N, L) <= 0 a light adds nothing (fill_triangle: no blinn_phong, "
+                          "no shadow lookup); draw_scene's depth pass draws both faces (no culling), so the floor, seen "
+                          "from below, still shadows the undersides the light faces"}},
         {"m5.needs", {"needs", "TODO 9: run only the passes the scene needs, as Stats says"}},
         {"m5.extreme_input",
          {"bad input", "TODO 9: skip a triangle with an index out of range or a non-finite clip coordinate; clip the "
@@ -1578,7 +1580,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                           " are in the wrong light state against a ray cast to the light (reference " +
                           std::to_string(ref_wrong) + ", allowed " + num(std::floor(allowed)) + ")" +
                           (acne > 20 ? ": that many, spread over lit surfaces, is shadow acne (a surface shadowing "
-                                       "itself: the bias) or a wrong light matrix or comparison"
+                                       "itself: the bias), a wrong light matrix or comparison, or a caster missing "
+                                       "from the depth pass (it draws both faces)"
                                      : "") +
                           "; " + theme_advice.substr(theme_advice.find(": ") + 2));
             }

@@ -567,7 +567,8 @@ std::vector<Scene> build() {
     {
         Scene s = picture("m5.light_behind", "A shadow-casting light behind every surface: ambient only",
                           "dot(N, L) <= 0: the light adds nothing (no diffuse, no specular) and no shadow lookup is "
-                          "made; the depth pass still runs",
+                          "made; the depth pass still runs, with both faces: the floor, seen from below, shadows the "
+                          "undersides that face the light",
                           {6, 8, 9}, 128, 96);
         std::vector<Item> items = floor_and_box({0.2, 0.9, -0.1}, 0.6, 0);
         items[1].material.specular = {200, 200, 200};
@@ -580,6 +581,7 @@ std::vector<Scene> build() {
         pn.shadows.center = {0, 0.5, 0};
         pn.shadows.radius = 3.6;
         s.panels.push_back(pn);
+        s.checks.shadow_state = true;  // the undersides the light faces are shadowed by the floor's back
         add(s);
     }
 
