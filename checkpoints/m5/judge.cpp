@@ -609,6 +609,13 @@ void judge_lod(Ctx& c) {
         if (close(mine, t_lambda(k.du_dx, k.dv_dx, k.du_dy, k.dv_dy, 1, 1), 1e-6)) {
             why = ": that is rho in uv units per pixel; rho is in TEXEL units: multiply du by the width and dv by the "
                   "height of level 0 first";
+        } else if (close(mine, t_lambda(k.du_dx, k.dv_dx, 0, 0, k.width, k.height), 1e-6) ||
+                   close(mine, t_lambda(0, 0, k.du_dy, k.dv_dy, k.width, k.height), 1e-6)) {
+            why = std::string(": that is the length of the ") +
+                  (close(mine, t_lambda(k.du_dx, k.dv_dx, 0, 0, k.width, k.height), 1e-6) ? "x" : "y") +
+                  " derivatives alone; rho is the LARGER of the two screen directions' lengths in texels, "
+                  "max(|(W du/dx, H dv/dx)|, |(W du/dy, H dv/dy)|): a surface receding along the other direction "
+                  "shrinks its texels there";
         } else if (std::isfinite(want) && close(mine, want * std::log(2.0), 1e-6)) {
             why = ": lambda is log2(rho), not the natural logarithm";
         } else if (std::isinf(want)) {
