@@ -1233,8 +1233,8 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
         {"m5.shadow_box",
          {"shadow", "TODOs 5 and 9: draw_scene's depth pass draws every casting object through m4::draw_mesh into a "
                     "resolution^2 float-Z frame with light_view_projection, and the map keeps that matrix for the "
-                    "lookup; fill_triangle multiplies each light's term by shadow_factor at the interpolated world "
-                    "position"}},
+                    "lookup; fill_triangle multiplies each light's term by shadow_factor at the world position "
+                    "interpolated with the perspective-correct weights"}},
         {"m5.shadow_acne",
          {"shadow", "TODOs 5 and 9: fill_triangle passes the normalized normal and the world position to "
                     "shadow_factor, which applies the settings' biases; draw_scene's depth pass uses "

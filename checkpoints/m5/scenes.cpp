@@ -460,9 +460,9 @@ std::vector<Scene> build() {
         add(s);
     }
     {
-        Scene s = picture("m5.normal_map", "A normal-mapped quad, its uv sheared (left) and square (right)",
-                          "T and B from positions and uv; T' = T made orthogonal to N, B' = cross(N, T') (not B "
-                          "itself: with sheared uv it is not perpendicular to T); the texel as 2 t / 255 - 1",
+        Scene s = picture("m5.normal_map", "A normal-mapped quad, its uv sheared (left) and square but turned (right)",
+                          "T and B from the WORLD positions and uv; T' = T made orthogonal to N, B' = cross(N, T') (not "
+                          "B itself: with sheared uv it is not perpendicular to T); the texel as 2 t / 255 - 1",
                           {7, 6, 5, 9}, 256, 96);
         for (int p = 0; p < 2; ++p) {
             Mesh q = quad({-1.7, -1.2, 0}, {1.7, -1.2, 0}, {1.7, 1.2, 0}, {-1.7, 1.2, 0});
@@ -471,7 +471,14 @@ std::vector<Scene> build() {
             q.uvs = {{0, 2}, {3, 2}, {3 + 2 * shear, 0}, {2 * shear, 0}};
             MaterialSpec m = plain({200, 180, 160}, {140, 140, 140}, 24);
             m.normal_map = 0;
-            Panel pn = panel(cam({0.02, 0.03, 4.2}), {item(q, m)}, {tex(Pattern::kBumps, 64, 64, 4)}, 128 * p, 0, 128, 96);
+            Item it = item(q, m);
+            // The square one is turned in its own plane: its tangent frame must come from the
+            // world positions (the model's frame, not turned, lights the bumps from the wrong side).
+            if (p == 1) {
+                it.axis = {0, 0, 1};
+                it.angle = 0.6;
+            }
+            Panel pn = panel(cam({0.02, 0.03, 4.2}), {it}, {tex(Pattern::kBumps, 64, 64, 4)}, 128 * p, 0, 128, 96);
             pn.lights = {sun({-0.6, -0.5, -0.8}, {0.8, 0.8, 0.8})};
             s.panels.push_back(pn);
         }
