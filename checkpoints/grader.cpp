@@ -442,7 +442,8 @@ std::string checkpoint_output(const json& v, const std::string& why) {
     if (v.value("numbers_only", false)) {
         o << "\nno picture to compare: this checkpoint judges numbers";
     } else if (v.value("has_metrics", false)) {
-        o << "\nimage error: " << v["student"].value("differing_pixels", 0LL) << " pixel(s) differ, mean abs error "
+        const long long differing = v["student"].value("differing_pixels", 0LL);
+        o << "\nimage error: " << differing << (differing == 1 ? " pixel differs" : " pixels differ") << ", mean abs error "
           << v["student"].value("mean_abs_error", 0.0);
     }
     return o.str();

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "harness/diagnosis.h"
+#include "harness/judging.h"
 #include "raster/io.h"
 
 namespace fs = std::filesystem;
@@ -132,9 +133,9 @@ Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
     if (s.call <= 1) {
         msg << "first call on this scene";
     } else {
-        msg << "call number " << s.call << " on this scene (" << s.call - 1 << " earlier call(s) returned)";
+        msg << "call number " << s.call << " on this scene (" << plural(double(s.call - 1), "earlier call") << " returned)";
     }
-    msg << ", having written " << s.writes << " pixel(s) in that call";
+    msg << ", having written " << plural(double(s.writes), "pixel") << " in that call";
     if (s.stray_writes > 0) msg << " and " << s.stray_writes << " outside the image";
     msg << ": most likely an endless loop, so the watchdog stopped it";
     Finding out{f && !f->loop_topic.empty() ? f->loop_topic : "endless loop", msg.str()};
@@ -161,8 +162,8 @@ std::vector<Finding> nothing_drawn_findings(const Suite& suite, const Artifacts&
         const StudentFunction* f = find_function(suite, name);
         std::string msg = function_label(suite, name) + " drew nothing" +
                           (it->second.stray_writes > 0 ? " inside the image" : "") + " in " +
-                          std::to_string(it->second.calls) + " call(s); the reference draws " +
-                          std::to_string(ref.writes) + " pixel(s) with it on this scene";
+                          plural(double(it->second.calls), "call") + "; the reference draws " +
+                          plural(double(ref.writes), "pixel") + " with it on this scene";
         Finding finding{"nothing drawn", msg};
         finding.todo = f ? todo_label(f->todos) : "";
         finding.hint = (finding.todo.empty() ? "this TODO" : finding.todo) + " is not written yet (or `" + name +
@@ -306,10 +307,11 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
             rec.tolerated = band + pc.small_diffs;
             if (rec.tolerated > 0) {
                 std::ostringstream t;
-                t << rec.tolerated << " pixel(s) differ where the rule allows it (blue in diff.png): ";
+                t << plural(double(rec.tolerated), "pixel") << (rec.tolerated == 1 ? " differs" : " differ")
+                  << " where the rule allows it (blue in diff.png): ";
                 if (pc.small_diffs > 0) {
-                    t << pc.small_diffs << " by at most " << tol.strict_channel_diff
-                      << " level(s) (rounding and FMA differences)";
+                    t << pc.small_diffs << " by at most " << plural(double(tol.strict_channel_diff), "level")
+                      << " (rounding and FMA differences)";
                 }
                 if (band > 0) {
                     t << (pc.small_diffs > 0 ? "; " : "") << pc.lenient_diffs << " of at most "
@@ -321,15 +323,15 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
             }
             if (pc.strict_diffs > 0) {
                 findings.push_back(
-                    {"image", std::to_string(pc.strict_diffs) +
-                                  " pixel(s) differ from the expected image where every correct "
+                    {"image", plural(double(pc.strict_diffs), "pixel") + (pc.strict_diffs == 1 ? " differs" : " differ") +
+                                  " from the expected image where every correct "
                                   "implementation agrees; the first is (" +
                                   std::to_string(pc.first_x) + ", " + std::to_string(pc.first_y) +
                                   "). Bright red pixels in diff.png show them all."});
             }
             if (pc.lenient_diffs > tol.max_lenient_diffs) {
                 const std::string by = tol.strict_channel_diff > 0
-                                           ? " by more than " + std::to_string(tol.strict_channel_diff) + " level(s)"
+                                           ? " by more than " + plural(double(tol.strict_channel_diff), "level")
                                            : "";
                 findings.push_back({"image", std::to_string(pc.lenient_diffs) +
                                                  " pixels near edges differ from the expected image" + by + "; up to " +

@@ -336,7 +336,8 @@ int main(int argc, char** argv) {
         return 1;
     }
     if (failed + crashed > 0 || ctest_status != 0) {
-        std::cout << "\n" << failed + crashed << " checkpoint(s) to fix: start with the first one above.\n";
+        std::cout << "\n" << failed + crashed << (failed + crashed == 1 ? " checkpoint" : " checkpoints")
+                  << " to fix: start with the first one above.\n";
         return 1;
     }
     std::cout << "\nAll checkpoints pass.\n";

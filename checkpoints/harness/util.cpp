@@ -6,6 +6,7 @@
 #include <set>
 
 #include "harness/checkpoint.h"
+#include "harness/judging.h"
 
 namespace fs = std::filesystem;
 
@@ -80,8 +81,8 @@ const raster::Image* main_image_for_judging(const Artifacts& art, int width, int
     const auto it = art.images.find("main");
     if (it == art.images.end() || it->second.width() != width || it->second.height() != height) return nullptr;
     if (art.stray_writes > 0) {
-        j.findings.push_back({stray_topic, "your code asked to write " + std::to_string(art.stray_writes) +
-                                               " pixel(s) outside the image (Image::stray_writes): " + stray_advice});
+        j.findings.push_back({stray_topic, "your code asked to write " + plural(double(art.stray_writes), "pixel") +
+                                               " outside the image (Image::stray_writes): " + stray_advice});
     }
     return &it->second;
 }

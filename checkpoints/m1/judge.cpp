@@ -3,6 +3,7 @@
 // oracles are written independently (exact integer arithmetic for Bresenham, Liang-Barsky for
 // clipping, "coverage = 1 - distance" for Wu) so a bug shared with the reference is unlikely.
 #include "m1/judge.h"
+#include "harness/judging.h"
 
 #include <algorithm>
 #include <cmath>
@@ -375,7 +376,7 @@ struct Checker {
         strays_at = j.findings.size();
         if (strays > 0) {
             add("off the line",
-                std::to_string(strays) + " pixel(s) are drawn where no line passes within half a "
+                cp::plural(double(strays), "pixel") + (strays == 1 ? " is" : " are") + " drawn where no line passes within half a "
                 "pixel of their center, e.g. " + first);
         }
         for (const Plan& plan : plans) {
@@ -595,7 +596,7 @@ struct Checker {
                 }
             }
         }
-        if (wrong > 0) add("outcode", std::to_string(wrong) + " pixel center(s) got the wrong outcode; " + first, "TODO 1");
+        if (wrong > 0) add("outcode", cp::plural(double(wrong), "pixel center") + " got the wrong outcode; " + first, "TODO 1");
     }
 
     void check_clip_values(const cp::Artifacts& art) {
@@ -641,10 +642,10 @@ void attribute_stray_writes(const cp::Artifacts& art, cp::Judgement& j) {
     for (const auto& [name, t] : art.trace) {
         if (t.stray_writes <= 0) continue;
         attributed += t.stray_writes;
-        const std::string n = std::to_string(t.stray_writes);
+        const std::string n = cp::plural(double(t.stray_writes), "pixel");
         if (name == "draw_line_aa") {
             named.push_back({"clipping",
-                             "draw_line_aa asked to write " + n + " pixel(s) outside the image: where an "
+                             "draw_line_aa asked to write " + n + " outside the image: where an "
                              "anti-aliased line leaves the image through the top or bottom (left or right, for "
                              "a steep line), one or both of a column's two pixels are outside it",
                              "Test 0 <= row < height (for a steep line, the x against the width) before each "
@@ -652,12 +653,12 @@ void attribute_stray_writes(const cp::Artifacts& art, cp::Judgement& j) {
                              "TODO 5"});
         } else if (name == "draw_line") {
             named.push_back({"clipping",
-                             "draw_line asked to write " + n + " pixel(s) outside the image: clip the segment "
+                             "draw_line asked to write " + n + " outside the image: clip the segment "
                              "to the rectangle of pixel centers (in double) before converting to int, so the "
                              "loop only walks visible pixels",
                              "", "TODOs 2, 4"});
         } else {
-            named.push_back({"clipping", name + " asked to write " + n + " pixel(s) outside the image"});
+            named.push_back({"clipping", name + " asked to write " + n + " outside the image"});
         }
     }
     if (attributed == art.stray_writes && !named.empty()) j.findings = named;
@@ -709,8 +710,8 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
             if (rev != art.images.end() && rev->second.width() == img.width() && rev->second.height() == img.height()) {
                 differ = raster::compare(rev->second, img).differing_pixels;
             }
-            j.findings.push_back({"symmetry", "drawing every line from b to a changed " + std::to_string(differ) +
-                                                  " pixel(s) (see reversed.png): where the line passes exactly "
+            j.findings.push_back({"symmetry", "drawing every line from b to a changed " + cp::plural(double(differ), "pixel") +
+                                                  " (see reversed.png): where the line passes exactly "
                                                   "between two pixels, the choice must not depend on the direction",
                                   "", "TODO 4"});
         }

@@ -13,6 +13,7 @@
 // within kTieWindow of a half level may a correct implementation (float, stepped weights)
 // round either way.
 #include "m2/judge.h"
+#include "harness/judging.h"
 
 #include <algorithm>
 #include <array>
@@ -716,8 +717,8 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
         if (!sized || differ > 0) {
             j.findings.push_back(finding("winding",
                                          "listing each triangle's vertices in the other order changed " +
-                                             std::to_string(differ) +
-                                             " pixel(s) (see other_winding.png): both windings must give the same pixels",
+                                             cp::plural(double(differ), "pixel") +
+                                             " (see other_winding.png): both windings must give the same pixels",
                                          "TODO 4a",
                                          "If the signed area is negative, swap v1 and v2 (and, in fill_triangle_gradient, "
                                          "their colors) before testing; do not skip the triangle or flip the fill rule."));
