@@ -110,7 +110,9 @@ Mat4 rotate(Vec3 axis, double radians);
 // true with |a * out - I| <= 1e-3 in every entry. Between the two the choice is yours, as long
 // as it scales with the entries (the reference reports a pivot <= 1e-14 times the largest
 // |entry|; a fixed threshold such as 1e-6 fails). A matrix with an entry that is NaN or
-// infinite returns false too.
+// infinite returns false too, and so does one whose inverse would have an entry too large for a
+// double (a matrix of entries near 1e-320: check the result is finite before writing `out`;
+// the fuzzer, tools/fuzz.sh, checks this promise; no checkpoint does).
 bool inverse(const Mat4& a, Mat4& out);
 // TODO 3b: the inverse of a rigid transform (a rotation R and a translation t, last row
 // 0 0 0 1): R transposed, and -R^T t. No elimination, no test for singularity.

@@ -203,6 +203,13 @@ bool inverse(const Mat4& a, Mat4& out) {
             for (int c = 0; c < 8; ++c) m[r][c] -= f * m[col][c];
         }
     }
+    // A matrix of tiny entries (all near 1e-320, say) passes the relative pivot test, but its
+    // inverse is too large for a double: infinite or NaN entries mean "no inverse" too.
+    for (int r = 0; r < 4; ++r) {
+        for (int c = 4; c < 8; ++c) {
+            if (!std::isfinite(m[r][c])) return false;
+        }
+    }
     for (int r = 0; r < 4; ++r) {
         for (int c = 0; c < 4; ++c) out.m[r][c] = m[r][c + 4];
     }

@@ -193,6 +193,26 @@ TEST_CASE("m3 inverse: a matrix with a NaN or infinite entry is singular") {
     }
 }
 
+TEST_CASE("m3 inverse: an inverse too large for a double is no inverse") {
+    // Found by the fuzzer: entries of denorm_min pass the pivot test relative to the largest
+    // entry, but the inverse's entries (about 2e323) overflow to infinite and NaN.
+    const double d = std::numeric_limits<double>::denorm_min();
+    Mat4 a{};
+    const double rows[4][4] = {{d, d, d, 0}, {d, d, d, d}, {d, 0, d, 0}, {0, d, d, 0}};
+    for (int r = 0; r < 4; ++r) {
+        for (int c = 0; c < 4; ++c) a.m[r][c] = rows[r][c];
+    }
+    Mat4 out = m3::identity();
+    CHECK_FALSE(m3::inverse(a, out));
+    CHECK(finite(out));  // left alone
+    // The same matrix scaled to entries of 1e-300 has an inverse of entries near 1e300: finite.
+    for (auto& row : a.m) {
+        for (double& e : row) e = e == 0 ? 0 : 1e-300;
+    }
+    REQUIRE(m3::inverse(a, out));
+    CHECK(finite(out));
+}
+
 TEST_CASE("m3 projections: arguments that would overflow an entry give the zero matrix") {
     CHECK(is_zero(m3::perspective(60, 1, 1, DBL_MAX)));
     CHECK(is_zero(m3::perspective(60, 1e-320, 1, 10)));
