@@ -270,7 +270,7 @@ std::string diagnosis_for(const std::string& milestone, const std::string& id, c
         std::set<std::string> passing;
         static const std::regex checkpoint_id(R"(m[0-9]+\.[a-z0-9_]+)");
         for (const std::string& f : findings) {
-            const std::string marker = "pass their own checks (";
+            const std::string marker = std::string(kPassOwnChecks) + " (";
             const std::size_t at = f.find(marker);
             if (at == std::string::npos) continue;
             const std::size_t from = at + marker.size(), to = f.find(')', from);

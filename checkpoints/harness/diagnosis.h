@@ -73,6 +73,11 @@ struct BugLibrary {
     const KnownBug* bug(const std::string& name) const;  // nullptr if unknown
 };
 
+// The words a picture's finding uses for "the functions it is drawn with pass their own
+// checks (m5.blinn_phong, m5.shadow_lookup)": the judges write them, diagnosis_for reads the
+// checkpoints listed after them.
+inline constexpr const char* kPassOwnChecks = "pass their own checks";
+
 // A channel difference of at most this many levels is noise (compilers, FMA, rounding of
 // blends), never a symptom.
 inline constexpr int kPixelNoise = 3;

@@ -14,6 +14,7 @@
 #include <optional>
 #include <set>
 
+#include "harness/diagnosis.h"
 #include "harness/judging.h"
 #include "m4/scenes.h"
 #include "raster/plot.h"
@@ -754,7 +755,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                                 "this picture cannot come out right before that checkpoint passes");
             c.j.findings.push_back(f);
         } else c.add(caller_topic, advice.substr(0, colon) + ": the picture differs from the expected one beyond the tolerance" +
-                                where + " (see diff.png), though the functions it is drawn with pass their own checks" +
+                                where + " (see diff.png), though the functions it is drawn with " + cp::kPassOwnChecks +
                                 (list.empty() ? std::string() : " (" + list + ")") + ", so look at how they are called: " +
                                 advice.substr(colon + 2) + ". This scene is about: " + s.hint);
         if (fill) keep = c.j.findings.size();  // the counts and keys below follow from fill_triangle's mistake

@@ -17,6 +17,7 @@
 #include <optional>
 #include <set>
 
+#include "harness/diagnosis.h"
 #include "harness/judging.h"
 #include "m5/scenes.h"
 #include "raster/plot.h"
@@ -609,10 +610,9 @@ void judge_lod(Ctx& c) {
         if (close(mine, t_lambda(k.du_dx, k.dv_dx, k.du_dy, k.dv_dy, 1, 1), 1e-6)) {
             why = ": that is rho in uv units per pixel; rho is in TEXEL units: multiply du by the width and dv by the "
                   "height of level 0 first";
-        } else if (close(mine, t_lambda(k.du_dx, k.dv_dx, 0, 0, k.width, k.height), 1e-6) ||
-                   close(mine, t_lambda(0, 0, k.du_dy, k.dv_dy, k.width, k.height), 1e-6)) {
-            why = std::string(": that is the length of the ") +
-                  (close(mine, t_lambda(k.du_dx, k.dv_dx, 0, 0, k.width, k.height), 1e-6) ? "x" : "y") +
+        } else if (const bool x_only = close(mine, t_lambda(k.du_dx, k.dv_dx, 0, 0, k.width, k.height), 1e-6);
+                   x_only || close(mine, t_lambda(0, 0, k.du_dy, k.dv_dy, k.width, k.height), 1e-6)) {
+            why = std::string(": that is the length of the ") + (x_only ? "x" : "y") +
                   " derivatives alone; rho is the LARGER of the two screen directions' lengths in texels, "
                   "max(|(W du/dx, H dv/dx)|, |(W du/dy, H dv/dy)|): a surface receding along the other direction "
                   "shrinks its texels there";
@@ -1652,7 +1652,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             c.add(theme_topic, theme_advice.substr(0, colon) + ": the picture differs from the expected one beyond the tolerance "
                                                                "(see diff.png)" +
                                    (list.empty() ? std::string()
-                                                 : ", though the functions it is drawn with pass their own checks (" + list +
+                                                 : ", though the functions it is drawn with " + std::string(cp::kPassOwnChecks) + " (" + list +
                                                        "), so look at how they are called") +
                                    ": " + theme_advice.substr(colon + 2) + ". This scene is about: " + s.hint);
         }
