@@ -467,6 +467,12 @@ inline Vec4 times(const Mat4& a, Vec4 v) {
     return {row(a.m[0]), row(a.m[1]), row(a.m[2]), row(a.m[3])};
 }
 
+// m3::to_screen, inline for the same loop, with the same divisions (so the same bits).
+inline Vec3 screen_of(Vec4 c, int width, int height) {
+    const double x = c.x / c.w, y = c.y / c.w, z = c.z / c.w;
+    return {(x + 1) / 2 * width, (1 - y) / 2 * height, z};
+}
+
 // Where a position lies after step 1. kInside: in the view volume, with its screen position
 // snapped. kInsideUnsnapped: in the view volume but with no screen position: the origin of
 // clip space, (0, 0, 0, 0), lies on all six planes and x / w is NaN there; a triangle using
@@ -525,9 +531,13 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
     // Step 1: every position once, to the vertex the fill reads, snapped once here rather than
     // once per triangle that uses it.
     PerPosition& pp = per_position_arrays();
-    pp.where.resize(n);
-    pp.snapped.resize(n);
-    pp.vertex.resize(n);
+    // Grown, never shrunk: resizing down for a small mesh and up again for the next frame's big
+    // one would construct every entry of the big one anew each frame (step 1 sets each anyway).
+    if (pp.vertex.size() < static_cast<std::size_t>(n)) {
+        pp.where.resize(n);
+        pp.snapped.resize(n);
+        pp.vertex.resize(n);
+    }
     const int width = frame.color.width(), height = frame.color.height();
     auto clip_of = [&](int i) { return times(mvp, raster::point(mesh.positions[i])); };
     for (int i = 0; i < n; ++i) {
@@ -539,7 +549,7 @@ Stats draw_mesh(Frame& frame, const Mesh& mesh, const Mat4& model, const Mat4& v
         if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
             pp.where[i] = Where::kNotFinite;
         } else if (inside(c)) {
-            v.screen = m3::to_screen(c, width, height);
+            v.screen = screen_of(c, width, height);
             pp.where[i] = m2::snap({v.screen.x, v.screen.y}, pp.snapped[i]) ? Where::kInside : Where::kInsideUnsnapped;
         } else {
             pp.where[i] = Where::kOutside;

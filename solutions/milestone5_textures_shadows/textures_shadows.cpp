@@ -517,10 +517,11 @@ void fill_snapped(Frame& frame, std::array<const ScreenVertex*, 3> p, std::array
     UvPlanes planes;
     bool planes_built = false;
     const Vec3 plain{double(material.color.r), double(material.color.g), double(material.color.b)};
-    const double inv_area = 1.0 / static_cast<double>(area2);
-    // 1 / w_i once per triangle: the perspective-correct weights (m4::perspective_weights)
-    // then cost one division per fragment instead of four.
-    const double iw0 = 1 / a0.w, iw1 = 1 / a1.w, iw2 = 1 / a2.w;
+    // 1 / area and 1 / w_i once per triangle, at its first fragment (most triangles of a fine
+    // mesh have none): the screen weights then cost multiplications, and the perspective-correct
+    // weights (m4::perspective_weights) one division per fragment instead of four.
+    double inv_area = 0, iw0 = 0, iw1 = 0, iw2 = 0;
+    bool divided = false;
     std::uint32_t* const depth = frame.depth.data();
     long long fragments = 0, shaded = 0;
 
@@ -530,6 +531,13 @@ void fill_snapped(Frame& frame, std::array<const ScreenVertex*, 3> p, std::array
         for (int x = box.x0; x < box.x1; ++x, ++at, e0 += step_x[0], e1 += step_x[1], e2 += step_x[2]) {
             if (e0 < bias[0] || e1 < bias[1] || e2 < bias[2]) continue;
             ++fragments;
+            if (!divided) {
+                inv_area = 1.0 / static_cast<double>(area2);
+                iw0 = 1 / a0.w;
+                iw1 = 1 / a1.w;
+                iw2 = 1 / a2.w;
+                divided = true;
+            }
             const double l0 = double(e1) * inv_area, l1 = double(e2) * inv_area, l2 = double(e0) * inv_area;
             const double z = l0 * a0.screen.z + l1 * a1.screen.z + l2 * a2.screen.z;
             // A fragment behind the stored one is not shaded.
@@ -629,6 +637,18 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
 // BEGIN SOLUTION
 namespace {
 
+// m3's Mat4 * Vec4 and to_screen with the same arithmetic in the same order (so the same
+// bits), inline: the loop over positions runs them for every position of every frame, and a
+// call into milestone 3's file per product costs about as much as the product.
+inline Vec4 transformed(const Mat4& a, Vec4 v) {
+    auto row = [&](const double (&m)[4]) { return 0.0 + m[0] * v.x + m[1] * v.y + m[2] * v.z + m[3] * v.w; };
+    return {row(a.m[0]), row(a.m[1]), row(a.m[2]), row(a.m[3])};
+}
+inline Vec3 screen_of(Vec4 c, int width, int height) {
+    const double x = c.x / c.w, y = c.y / c.w, z = c.z / c.w;
+    return {(x + 1) / 2 * width, (1 - y) / 2 * height, z};
+}
+
 bool inside(Vec4 c) {
     return c.w + c.x >= 0 && c.w - c.x >= 0 && c.w + c.y >= 0 && c.w - c.y >= 0 && c.w + c.z >= 0 && c.w - c.z >= 0;
 }
@@ -723,26 +743,30 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
             computed = m4::vertex_normals(mesh.positions, mesh.triangles);
             normals = &computed;
         }
-        clip.resize(n);
-        vertex.resize(n);
-        where.resize(n);
-        snapped.resize(n);
+        // Grown, never shrunk (the floor after the sphere would otherwise make the sphere's
+        // arrays be constructed anew, entry by entry, every frame).
+        if (vertex.size() < static_cast<std::size_t>(n)) {
+            clip.resize(n);
+            vertex.resize(n);
+            where.resize(n);
+            snapped.resize(n);
+        }
         for (int i = 0; i < n; ++i) {
             const Vec3 position = mesh.positions[i];
-            clip[i] = mvp * raster::point(position);
+            clip[i] = transformed(mvp, raster::point(position));
             ScreenVertex& sv = vertex[i];
             sv = {};
             sv.w = clip[i].w;
             if (!finite(clip[i])) {
                 where[i] = Where::kNotFinite;
             } else if (inside(clip[i])) {
-                sv.screen = m3::to_screen(clip[i], width, height);
+                sv.screen = screen_of(clip[i], width, height);
                 where[i] = m2::snap({sv.screen.x, sv.screen.y}, snapped[i]) ? Where::kInside : Where::kInsideUnsnapped;
             } else {
                 where[i] = Where::kOutside;
             }
-            if (need_world) sv.world = m3::transform_point(object.model, position);
-            if (lit) sv.normal = unit_or_zero(m3::transform_direction(to_world_normal, (*normals)[i]));
+            if (need_world) sv.world = raster::xyz(transformed(object.model, raster::point(position)));
+            if (lit) sv.normal = unit_or_zero(raster::xyz(transformed(to_world_normal, raster::direction((*normals)[i]))));
             if (need_uv && i < static_cast<int>(mesh.uvs.size())) sv.uv = mesh.uvs[i];
         }
 
