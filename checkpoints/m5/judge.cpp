@@ -1114,17 +1114,17 @@ double share_off(const raster::Image& img, const Panel& p, const Truth& t) {
 // Pixels in the wrong light state: per pixel center the nearest surface by ray casting, lit or
 // not by a ray to the light; the pixel's color is classified by the nearer of the two colors
 // the rules give there (lit, shadowed). Surfaces the light does not face, and pixels where the
-// two colors are close, are left out. Returns (wrong, counted).
-std::pair<long long, long long> wrong_light_state(const raster::Image& img, const Panel& p) {
+// two colors are close, are left out.
+LightState wrong_light_state(const raster::Image& img, const Panel& p) {
     const auto tris = world_triangles(p, false);
     const Basis b = basis(p.camera);
     const LightSpec* light = nullptr;
     for (const LightSpec& l : p.lights) {
         if (l.casts_shadows) light = &l;
     }
-    if (!light) return {0, 0};
+    if (!light) return {};
     const Vec3 to_light = -unit_or_zero(light->direction);
-    long long wrong = 0, counted = 0;
+    LightState state;
     for (int y = 0; y < p.h; ++y) {
         for (int x = 0; x < p.w; ++x) {
             const Hit h = cast(tris, p.camera.eye, ray(p, b, x + 0.5, y + 0.5), 0);
@@ -1140,12 +1140,14 @@ std::pair<long long, long long> wrong_light_state(const raster::Image& img, cons
             const Vec3 hit = p.camera.eye + ray(p, b, x + 0.5, y + 0.5) * h.t;
             const bool in_shadow = cast(tris, hit + n * 1e-6, to_light, 1e-9).tri != nullptr;
             const Color mine = img.at(p.x0 + x, p.y0 + y);
-            ++counted;
+            ++state.counted;
             const bool looks_lit = max_diff(mine, lit) < max_diff(mine, shadowed);
-            wrong += looks_lit == in_shadow;
+            if (looks_lit && in_shadow) ++state.missing;
+            if (!looks_lit && !in_shadow) ++state.spurious;
         }
     }
-    return {wrong, counted};
+    state.wrong = state.missing + state.spurious;
+    return state;
 }
 
 namespace {
@@ -1574,24 +1576,35 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             }
         }
         if (s.checks.shadow_state) {
-            const auto [wrong, counted] = wrong_light_state(*mine, panel);
-            const auto [ref_wrong, ref_counted] =
-                ref_main == ref.images.end() ? std::pair<long long, long long>{0, 0} : wrong_light_state(ref_main->second, panel);
+            const LightState state = wrong_light_state(*mine, panel);
+            const long long ref_wrong = ref_main == ref.images.end() ? 0 : wrong_light_state(ref_main->second, panel).wrong;
             c.j.measures["pixels in the wrong light state" + where + " (reference " + std::to_string(ref_wrong) + ", of " +
-                         std::to_string(counted) + " lit surfaces)"] = double(wrong);
-            const double allowed = double(ref_wrong) * 1.3 + 10 + 0.01 * double(counted);
-            if (double(wrong) > allowed) {
-                const double acne = counted ? 100.0 * double(wrong) / double(counted) : 0;
-                c.add("shadow",
-                      theme_advice.substr(0, theme_advice.find(": ")) + ": " + std::to_string(wrong) + " of " +
-                          std::to_string(counted) + " pixels" + where +
-                          " are in the wrong light state against a ray cast to the light (reference " +
-                          std::to_string(ref_wrong) + ", allowed " + num(std::floor(allowed)) + ")" +
-                          (acne > 20 ? ": that many, spread over lit surfaces, is shadow acne (a surface shadowing "
-                                       "itself: the bias), a wrong light matrix or comparison, or a caster missing "
-                                       "from the depth pass (it draws both faces)"
-                                     : "") +
-                          "; " + theme_advice.substr(theme_advice.find(": ") + 2));
+                         std::to_string(state.counted) + " pixels that face the light)"] = double(state.wrong);
+            const double allowed = double(ref_wrong) * 1.3 + 10 + 0.01 * double(state.counted);
+            if (double(state.wrong) > allowed) {
+                // Which way they are wrong says where to look: shadows missing, or shadows where
+                // the light arrives.
+                auto of_them = [&](long long k) { return (k == state.wrong ? std::string("all") : num(double(k))) + " of them"; };
+                std::string which;
+                if (3 * state.missing >= 2 * state.wrong) {
+                    which = ": " + of_them(state.missing) +
+                            " should be in shadow and are lit, so shadows are missing: a caster left out of the "
+                            "depth pass (it draws every object that casts a shadow, with both faces), a bias so "
+                            "large that shadows come off their casters (peter panning), or the comparison reversed";
+                } else if (3 * state.spurious >= 2 * state.wrong) {
+                    which = ": " + of_them(state.spurious) +
+                            " are drawn in shadow where the light reaches them: spread over lit surfaces that is "
+                            "shadow acne (a surface shadowing itself: too little bias), or a wrong light matrix, or "
+                            "the comparison reversed";
+                } else {
+                    which = " (" + num(double(state.missing)) + " in shadow but lit, " + num(double(state.spurious)) +
+                            " lit but drawn in shadow): a wrong light matrix or comparison, or the bias";
+                }
+                c.add("shadow", theme_advice.substr(0, theme_advice.find(": ")) + ": " + std::to_string(state.wrong) +
+                                    " of " + std::to_string(state.counted) + " pixels" + where +
+                                    " are in the wrong light state against a ray cast to the light (reference " +
+                                    std::to_string(ref_wrong) + ", allowed " + num(std::floor(allowed)) + ")" + which +
+                                    "; " + theme_advice.substr(theme_advice.find(": ") + 2));
             }
         }
         if (s.checks.sphere_error) {

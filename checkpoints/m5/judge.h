@@ -25,6 +25,12 @@ Truth bilinear_truth(const Panel& p);
 // The mean absolute channel difference between panel p of `img` and the truth, in levels.
 double truth_error(const raster::Image& img, const Panel& p, const Truth& t);
 // Pixels of panel p of `img` in the wrong light state against a ray cast to the light (the
-// panel's light that casts shadows), and the pixels counted: (wrong, counted).
-std::pair<long long, long long> wrong_light_state(const raster::Image& img, const Panel& p);
+// panel's light that casts shadows), split by which way they are wrong, and the pixels counted.
+struct LightState {
+    long long wrong = 0;          // missing + spurious
+    long long missing = 0;        // the ray to the light is blocked, but the pixel looks lit
+    long long spurious = 0;       // the ray reaches the light, but the pixel looks shadowed
+    long long counted = 0;        // pixels that face the light where lit and shadowed differ visibly
+};
+LightState wrong_light_state(const raster::Image& img, const Panel& p);
 }  // namespace m5cp
