@@ -334,7 +334,7 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
                                            ? " by more than " + plural(double(tol.strict_channel_diff), "level")
                                            : "";
                 findings.push_back({"image", std::to_string(pc.lenient_diffs) +
-                                                 " pixels near edges differ from the expected image" + by + "; up to " +
+                                                 " pixels in the ambiguous band differ from the expected image" + by + "; up to " +
                                                  std::to_string(tol.max_lenient_diffs) + " may, because " + tol.why +
                                                  ". Over that limit none is tolerated: all are red in diff.png."});
             }
