@@ -319,7 +319,7 @@ struct Stats {
     long long mipmap_builds = 0;       // pyramids built (at most one per texture; see above)
     long long normal_map_samples = 0;  // normal-map texels read (where the frame is not valid: free)
     long long tangent_frames = 0;      // tangent_frame() calls (one per mesh triangle with a normal map)
-    long long specular_terms = 0;      // blinn_phong() calls with a nonzero specular color
+    long long specular_terms = 0;      // blinn_phong() calls with a nonzero specular color (where c > 0 only)
     long long shadow_lookups = 0;      // shadow_factor() calls
 };
 

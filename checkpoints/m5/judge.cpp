@@ -1131,6 +1131,18 @@ LightState wrong_light_state(const raster::Image& img, const Panel& p) {
             if (!h.tri) continue;
             const Vec3 n = unit_or_zero(raster::cross(h.tri->b - h.tri->a, h.tri->c - h.tri->a));
             const double c = raster::dot(n, to_light);
+            if (c < -0.1 && p.lights.size() == 1) {
+                // A light adds nothing here; lit as if from the opposite side is L = +direction.
+                const Color base = p.items[std::size_t(h.tri->item)].material.color;
+                const Vec3 bv{double(base.r), double(base.g), double(base.b)};
+                const Color ambient_only = to_color(mul(bv, p.ambient));
+                const Color opposite = to_color(mul(bv, p.ambient + light->intensity * -c));
+                if (max_diff(opposite, ambient_only) >= 20) {
+                    const Color mine = img.at(p.x0 + x, p.y0 + y);
+                    ++state.facing_away;
+                    state.lit_from_behind += max_diff(mine, opposite) < max_diff(mine, ambient_only);
+                }
+            }
             if (!(c > 0)) continue;
             const Color base = p.items[std::size_t(h.tri->item)].material.color;
             const Vec3 bv{double(base.r), double(base.g), double(base.b)};
@@ -1144,6 +1156,10 @@ LightState wrong_light_state(const raster::Image& img, const Panel& p) {
             const bool looks_lit = max_diff(mine, lit) < max_diff(mine, shadowed);
             if (looks_lit && in_shadow) ++state.missing;
             if (!looks_lit && !in_shadow) ++state.spurious;
+            if (in_shadow && max_diff(shadowed, Color{0, 0, 0}) >= 8) {
+                ++state.in_shadow;
+                state.too_dark += max_diff(mine, Color{0, 0, 0}) < max_diff(mine, shadowed);
+            }
         }
     }
     state.wrong = state.missing + state.spurious;
@@ -1153,8 +1169,9 @@ LightState wrong_light_state(const raster::Image& img, const Panel& p) {
 namespace {
 
 // The exact spheres (every item a uv_sphere of radius size.x), lit with Blinn-Phong per pixel;
-// the ambient term `ambient_times` times (1: the rule; the number of lights: a known mistake).
-raster::Image exact_spheres(const Panel& p, double ambient_times = 1) {
+// the ambient term `ambient_times` times (1: the rule; the number of lights: a known mistake),
+// L = to_light_sign * direction (-1: the rule; +1: the light's direction taken as L, a mistake).
+raster::Image exact_spheres(const Panel& p, double ambient_times = 1, double to_light_sign = -1) {
     raster::Image img(p.w, p.h, p.background);
     const Basis b = basis(p.camera);
     for (int y = 0; y < p.h; ++y) {
@@ -1180,7 +1197,7 @@ raster::Image exact_spheres(const Panel& p, double ambient_times = 1) {
             const Vec3 bv{double(base.r), double(base.g), double(base.b)};
             Vec3 sum = mul(bv, p.ambient * ambient_times);
             for (const LightSpec& l : p.lights) {
-                PhongCase k{bv, hit_item->material.specular, hit_item->material.shininess, n, p.camera.eye - hit, -l.direction,
+                PhongCase k{bv, hit_item->material.specular, hit_item->material.shininess, n, p.camera.eye - hit, l.direction * to_light_sign,
                             l.intensity};
                 sum = sum + t_phong(k);
             }
@@ -1482,6 +1499,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
     }
 
     std::map<std::string, std::pair<double, double>> totals;
+    bool counts_off = false;  // some count differs from the reference's
     for (std::size_t p = 0; p < s.panels.size(); ++p) {
         const Panel& panel = s.panels[p];
         const std::string key = "panel" + std::to_string(p);
@@ -1519,6 +1537,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             // per call.
             if (!ok && name == "triangles_drawn" && !panel.screen_tris.empty() && a == double(panel.screen_tris.size())) ok = true;
             if (ok) continue;
+            counts_off = true;
             if (name == "fragments" || name == "shaded") fragments_off = true;
             if (per_fragment && fragments_off) continue;
             std::string why, topic = st.topic, todo = st.todo;
@@ -1577,7 +1596,27 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         }
         if (s.checks.shadow_state) {
             const LightState state = wrong_light_state(*mine, panel);
-            const long long ref_wrong = ref_main == ref.images.end() ? 0 : wrong_light_state(ref_main->second, panel).wrong;
+            const LightState ref_state = ref_main == ref.images.end() ? LightState{} : wrong_light_state(ref_main->second, panel);
+            const long long ref_wrong = ref_state.wrong;
+            // Surfaces facing away from the light drawn lit: L taken as +direction.
+            if (double(state.lit_from_behind) > 10 + 1.3 * double(ref_state.lit_from_behind) &&
+                2 * state.lit_from_behind >= state.facing_away) {
+                c.add("light behind", "TODO 5: " + std::to_string(state.lit_from_behind) + " of the " +
+                                          std::to_string(state.facing_away) + " pixels" + where +
+                                          " on surfaces that face away from the light are lit as if it shone from "
+                                          "the opposite side (reference " + std::to_string(ref_state.lit_from_behind) +
+                                          "): L, toward the light, is -direction (a Light's direction is the way its "
+                                          "rays travel), normalized");
+            }
+            // Shadows darker than ambient alone: the shadow factor scaled the ambient term too.
+            if (double(state.too_dark) > 10 + 1.3 * double(ref_state.too_dark) && 2 * state.too_dark >= state.in_shadow) {
+                c.add("shadow", "TODO 5: " + std::to_string(state.too_dark) + " of the " + std::to_string(state.in_shadow) +
+                                    " pixels" + where +
+                                    " in shadow are nearer black than the ambient light alone gives (reference " +
+                                    std::to_string(ref_state.too_dark) +
+                                    "): a shadow takes away only its light's term (diffuse and specular times the "
+                                    "shadow factor); ambient (base times lighting.ambient) is added once, unshadowed");
+            }
             c.j.measures["pixels in the wrong light state" + where + " (reference " + std::to_string(ref_wrong) + ", of " +
                          std::to_string(state.counted) + " pixels that face the light)"] = double(state.wrong);
             const double allowed = double(ref_wrong) * 1.3 + 10 + 0.01 * double(state.counted);
@@ -1594,8 +1633,9 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 } else if (3 * state.spurious >= 2 * state.wrong) {
                     which = ": " + of_them(state.spurious) +
                             " are drawn in shadow where the light reaches them: spread over lit surfaces that is "
-                            "shadow acne (a surface shadowing itself: too little bias), or a wrong light matrix, or "
-                            "the comparison reversed";
+                            "shadow acne (a surface shadowing itself: too little bias); else a wrong light matrix, "
+                            "the comparison reversed, or L with the wrong sign (L = -direction: with +direction "
+                            "the light never arrives where it should)";
                 } else {
                     which = " (" + num(double(state.missing)) + " in shadow but lit, " + num(double(state.spurious)) +
                             " lit but drawn in shadow): a wrong light matrix or comparison, or the bias";
@@ -1617,6 +1657,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 const double lights = double(panel.lights.size());
                 const bool ambient_per_light =
                     lights > 1 && panel_error(*mine, panel, exact_spheres(panel, lights)) <= ref_err + 0.5;
+                // L = +direction: lit from the opposite side.
+                const bool l_reversed = !ambient_per_light && panel_error(*mine, panel, exact_spheres(panel, 1, 1)) <= ref_err + 0.5;
                 c.add("specular", "TODO 5: the spheres are " + plural(round2(err), "level") +
                                       " from the exact Blinn-Phong spheres on average, the reference's " +
                                       num(round2(ref_err)) +
@@ -1625,6 +1667,10 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                              "once per LIGHT (as closely as the reference matches the right ones): add "
                                              "ambient (base times lighting.ambient) once per fragment, then blinn_phong "
                                              "for each light"
+                                       : l_reversed
+                                           ? ", but they match the exact spheres lit from the OPPOSITE side: L, toward "
+                                             "the light, is -direction (a Light's direction is the way its rays "
+                                             "travel), normalized"
                                            : ": " + theme_advice.substr(theme_advice.find(": ") + 2)));
             }
         }
@@ -1667,7 +1713,12 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                    (list.empty() ? std::string()
                                                  : ", though the functions it is drawn with " + std::string(cp::kPassOwnChecks) + " (" + list +
                                                        "), so look at how they are called") +
-                                   ": " + theme_advice.substr(colon + 2) + ". This scene is about: " + s.hint);
+                                   ": " +
+                                   (theme_topic == "needs" && !counts_off
+                                        ? std::string("every count matches the reference's, so each pass ran where this "
+                                                      "scene needs it: what differs is what a pass computes, not which "
+                                                      "passes run (the other failing checkpoints say where)")
+                                        : theme_advice.substr(colon + 2) + ". This scene is about: " + s.hint));
         }
     }
     // The picture's own findings blame the caller the theme names (fill_triangle, draw_scene):

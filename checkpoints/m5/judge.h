@@ -31,6 +31,10 @@ struct LightState {
     long long missing = 0;        // the ray to the light is blocked, but the pixel looks lit
     long long spurious = 0;       // the ray reaches the light, but the pixel looks shadowed
     long long counted = 0;        // pixels that face the light where lit and shadowed differ visibly
+    long long in_shadow = 0;      // of them, where the ray to the light is blocked and ambient shows
+    long long too_dark = 0;       // of those, nearer black than ambient alone: ambient shadowed too
+    long long facing_away = 0;    // pixels clearly facing away from the panel's only light
+    long long lit_from_behind = 0;  // of them, lit as if L were +direction
 };
 LightState wrong_light_state(const raster::Image& img, const Panel& p);
 }  // namespace m5cp

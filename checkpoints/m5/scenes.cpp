@@ -572,10 +572,10 @@ std::vector<Scene> build() {
         add(s);
     }
     {
-        Scene s = picture("m5.light_behind", "A shadow-casting light behind every surface: ambient only",
-                          "dot(N, L) <= 0: the light adds nothing (no diffuse, no specular) and no shadow lookup is "
-                          "made; the depth pass still runs, with both faces: the floor, seen from below, shadows the "
-                          "undersides that face the light",
+        Scene s = picture("m5.light_behind", "A shadow-casting light from below the floor: ambient only",
+                          "where dot(N, L) <= 0 the light adds nothing (no diffuse, no specular) and no shadow lookup "
+                          "is made; the depth pass still runs, with both faces: the floor, seen from below, shadows "
+                          "the ball's underside, the one surface that faces the light",
                           {6, 8, 9}, 128, 96);
         std::vector<Item> items = floor_and_box({0.2, 0.9, -0.1}, 0.6, 0);
         items[1].material.specular = {200, 200, 200};
@@ -757,7 +757,7 @@ Scene vary(const Scene& pub, Rng& rng) {
     if (s.id != kFillScene) {
         const Vec3 d{rng.uniform(-10, 10) / 100.0, rng.uniform(-10, 10) / 100.0, rng.uniform(-10, 10) / 100.0};
         for (Panel& p : s.panels) p.camera.eye = p.camera.eye + d;
-        // (The light that is behind every surface stays exactly behind it.)
+        // (m5.light_behind's light stays exactly vertical: the box's sides stay edge-on to it.)
         const double turn = rng.uniform(-8, 8) / 100.0;
         for (Panel& p : s.panels) {
             for (LightSpec& l : p.lights) {
