@@ -250,7 +250,7 @@ Frame t_frame(const FrameCase& c) {
 
 // mode 0: the rule; 1: the texel read as t / 255 (no 2 t - 1); 2: T and B used without
 // making them orthonormal (each only normalized); 3: B' = cross(n, T') never negated to agree
-// with B.
+// with B; 4: B' = B made orthogonal to n alone (not to T').
 Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
     const Vec3 n = c.n;
     if (!c.valid || n == Vec3{} || !raster::is_finite(n) || !raster::is_finite(c.texel) || !raster::is_finite(c.tangent) ||
@@ -262,6 +262,7 @@ Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
     Vec3 bp = raster::cross(n, tp);
     if (raster::dot(bp, c.bitangent) < 0 && mode != 3) bp = -bp;
     if (mode == 2) bp = unit_or_zero(c.bitangent);
+    if (mode == 4) bp = unit_or_zero(c.bitangent - n * raster::dot(n, c.bitangent));  // against n, not T'
     const Vec3 m = mode == 1 ? c.texel / 255 : c.texel * 2.0 / 255 - Vec3{1, 1, 1};
     const Vec3 r = unit_or_zero(tp * m.x + bp * m.y + n * m.z);
     return r == Vec3{} ? n : r;
@@ -769,12 +770,20 @@ void judge_tangent(Ctx& c) {
         if (same3(mine, t_perturb(k, 1), 1e-9)) {
             why = ": the texel was read as t / 255 in [0, 1]; a normal-map texel is 2 t / 255 - 1, in [-1, 1] (128 "
                   "means 0)";
+        } else if (same3(mine, t_perturb(k, 2), 1e-9) && same3(mine, t_perturb(k, 4), 1e-9)) {
+            why = ": B' is not orthogonal to T' (B used as it is, or made orthogonal to n alone: where the uv mapping is "
+                  "sheared B is not perpendicular to T); make the frame orthonormal: T' = normalize(T - n dot(n, T)), "
+                  "B' = cross(n, T') (negated when it points away from B)";
         } else if (same3(mine, t_perturb(k, 2), 1e-9)) {
             why = ": T and B were used as they are; make the frame orthonormal: T' = normalize(T - n dot(n, T)), "
                   "B' = cross(n, T') (negated when it points away from B)";
         } else if (same3(mine, t_perturb(k, 3), 1e-9)) {
             why = ": B' = cross(n, T') points away from B here (dot(B', B) < 0) and was not negated: B' must agree with "
                   "B, if (dot(B', B) < 0) B' = -B', or a texel's y (green) tilts the normal the wrong way along v";
+        } else if (same3(mine, t_perturb(k, 4), 1e-9)) {
+            why = ": B' was made orthogonal to n but not to T' (B - n dot(n, B), normalized). Where the uv mapping is "
+                  "sheared B is not perpendicular to T, so that B' is not either: take B' = cross(n, T') (negated when "
+                  "it points away from B), or Gram-Schmidt B against both n and T'";
         } else if (const std::string because = unchanged_because(k); !because.empty()) {
             why = ": here the normal must come back unchanged: " + because;
         } else {
