@@ -1654,6 +1654,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                     " are in the wrong light state against a ray cast to the light (reference " +
                                     std::to_string(ref_wrong) + ", allowed " + num(std::floor(allowed)) + ")" + which +
                                     "; " + theme_advice.substr(theme_advice.find(": ") + 2));
+                // Its hint is what this scene's caller must do (the theme), not shadow_factor's rule.
+                c.j.findings.back().hint = theme_advice.substr(theme_advice.find(": ") + 2);
             }
         }
         if (s.checks.sphere_error) {
