@@ -699,6 +699,47 @@ void judge_filter(Ctx& c) {
     }
 }
 
+// What blinn_phong gives with the specular term raised from `x` instead of dot(N, H).
+Vec3 with_specular_base(const PhongCase& k, double x) {
+    const double c = raster::dot(unit_or_zero(k.normal), unit_or_zero(k.to_light));
+    return mul(k.base, k.intensity) * c + mul(k.specular, k.intensity) * std::pow(std::max(0.0, x), k.shininess);
+}
+
+// Phong's dot(R, V), R = 2 dot(N, L) N - L, for unit N, V and L.
+double phong_rv(const PhongCase& k) {
+    const Vec3 n = unit_or_zero(k.normal), v = unit_or_zero(k.to_eye), l = unit_or_zero(k.to_light);
+    return raster::dot(n * (2 * raster::dot(n, l)) - l, v);
+}
+
+// Blinn-Phong with N, V and L used as given (not normalized).
+Vec3 unnormalized_phong(const PhongCase& k) {
+    const double c = raster::dot(k.normal, k.to_light);
+    if (!(c > 0)) return {};
+    const double s = std::pow(std::max(0.0, raster::dot(k.normal, k.to_light + k.to_eye)), k.shininess);
+    return mul(k.base, k.intensity) * c + mul(k.specular, k.intensity) * s;
+}
+
+// The exponent that `mine`'s specular part was raised with, when its diffuse part is right, every
+// channel agrees on it and it is not the shininess asked for; NaN otherwise.
+double implied_shininess(const PhongCase& k, Vec3 mine) {
+    const Vec3 n = unit_or_zero(k.normal), v = unit_or_zero(k.to_eye), l = unit_or_zero(k.to_light);
+    const double c = raster::dot(n, l), nh = raster::dot(n, unit_or_zero(l + v));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (!(c > 0) || !(nh > 0 && nh < 0.999)) return nan;
+    const Vec3 rest = mine - mul(k.base, k.intensity) * c, scale = mul(k.specular, k.intensity);
+    double s = nan;
+    for (const auto& [r, w] : {std::pair{rest.x, scale.x}, std::pair{rest.y, scale.y}, std::pair{rest.z, scale.z}}) {
+        if (!(w > 0)) continue;
+        const double f = r / w;
+        if (!(f > 0 && f < 1)) return nan;
+        const double e = std::log(f) / std::log(nh);
+        if (std::isnan(s)) s = e;
+        else if (std::abs(e - s) > 1e-6 * std::max(1.0, std::abs(s))) return nan;
+    }
+    if (std::isnan(s) || std::abs(s - k.shininess) < 1e-6 * std::max(1.0, k.shininess)) return nan;
+    return std::round(s * 1e6) / 1e6;
+}
+
 void judge_phong(Ctx& c) {
     const Values& v = c.mine;
     const auto cases = phong_cases();
@@ -718,10 +759,22 @@ void judge_phong(Ctx& c) {
             why = ": dot(N, L) = " + num(cl) + " <= 0, so this light adds NOTHING: no diffuse and no specular either";
         } else if (same3(mine, Vec3{}, 1e-12)) {
             why = ": blinn_phong returned nothing";
-        } else if (cl > 0 && same3(mine, mul(k.base, k.intensity) * cl + mul(k.specular, k.intensity) * std::pow(cl, k.shininess), 1e-9)) {
-            why = ": the specular term was raised from dot(N, L); it is max(0, dot(N, H))^shininess, H = normalize(L + V), "
-                  "the halfway vector between the directions to the light and to the eye";
-        } else if (raster::length(k.normal) != 1 || raster::length(k.to_eye) != 1 || raster::length(k.to_light) != 1) {
+        } else if (cl > 0 && (same3(mine, with_specular_base(k, cl), 1e-9) || same3(mine, with_specular_base(k, phong_rv(k)), 1e-9))) {
+            // Phong's dot(R, V) equals dot(N, L) where V = N: one message names both.
+            const bool from_nl = same3(mine, with_specular_base(k, cl), 1e-9);
+            const bool from_rv = same3(mine, with_specular_base(k, phong_rv(k)), 1e-9);
+            why = std::string(": the specular term was raised from ") +
+                  (from_nl && from_rv ? "dot(N, L) (or from Phong's dot(R, V), R = 2 dot(N, L) N - L: the same number "
+                                        "here, where V = N)"
+                   : from_nl          ? "dot(N, L)"
+                                      : "Phong's dot(R, V), R = 2 dot(N, L) N - L, the mirror direction") +
+                  "; Blinn-Phong's is max(0, dot(N, H))^shininess, H = normalize(L + V), the halfway vector between the "
+                  "directions to the light and to the eye";
+        } else if (const double s = implied_shininess(k, mine); cl > 0 && std::isfinite(s)) {
+            why = ": the diffuse part is right and the specular part is max(0, dot(N, H))^" + num(s) +
+                  ", not ^shininess (" + num(k.shininess) + "): raise dot(N, H) to the material's shininess itself";
+        } else if ((raster::length(k.normal) != 1 || raster::length(k.to_eye) != 1 || raster::length(k.to_light) != 1) &&
+                   same3(mine, unnormalized_phong(k), 1e-9)) {
             why = ": normalize N, V and L first (here they are not of length 1; a zero one makes the light add nothing)";
         }
         if (why.empty() && cl > 0) {
