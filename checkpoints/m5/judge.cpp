@@ -1298,7 +1298,8 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
                     "and lets sample() clamp it"}},
         {"m5.wrap_quad", {"wrap", "TODO 5: fill_triangle samples with the texture's own wrap modes (wrap_u, wrap_v)"}},
         {"m5.perspective_uv",
-         {"perspective uv", "TODO 5: fill_triangle interpolates uv with the perspective-correct weights "
+         {"perspective uv", "TODO 5: fill_triangle interpolates uv (left floor), and for a lit material the normal "
+                            "(right floor) and the world position, with the perspective-correct weights "
                             "(m4::perspective_weights of the screen weights and w), not the screen weights"}},
         {"m5.huge_uv",
          {"perspective uv", "TODO 5: keep uv in double from the vertices through the interpolation to sample(): a float "
@@ -1643,7 +1644,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         }
         if (!sized) continue;
         if (!panel.screen_tris.empty()) judge_screen_uv(c, *mine, ref, panel);
-        if (s.checks.nearest_truth) {
+        if (s.checks.nearest_truth && !panel.textures.empty()) {
             const Truth truth = nearest_truth(panel);
             const double err = share_off(*mine, panel, truth);
             const double ref_err = ref_main == ref.images.end() ? 0 : share_off(ref_main->second, panel, truth);

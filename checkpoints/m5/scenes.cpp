@@ -384,17 +384,27 @@ std::vector<Scene> build() {
         add(s);
     }
     {
-        Scene s = picture("m5.perspective_uv", "A checkerboard floor through draw_scene: perspective-correct uv",
-                          "interpolate u/w, v/w and 1/w linearly on the screen, then divide (m4::perspective_weights)",
-                          {5, 9}, 128, 96);
+        Scene s = picture("m5.perspective_uv", "Floors through draw_scene: perspective-correct uv (left) and normals (right)",
+                          "interpolate u/w, v/w and 1/w linearly on the screen, then divide (m4::perspective_weights); "
+                          "the normal and the world position of a lit material go through the same weights",
+                          {5, 9, 6}, 256, 96);
         // The whole floor lies inside the view volume: nothing is clipped.
-        Panel pn = panel(cam({0.05, 0.9, 4.5}, {0.02, -0.9, -3}, 0.5, 50),
-                         {item(floor_quad(-1, 1.5, 1.5, -9, {1, 1}), unlit(0, Filter::kNearest))},
+        const Camera view = cam({0.05, 0.9, 4.5}, {0.02, -0.9, -3}, 0.5, 50);
+        Panel pn = panel(view, {item(floor_quad(-1, 1.5, 1.5, -9, {1, 1}), unlit(0, Filter::kNearest))},
                          {tex(Pattern::kChecker, 8, 8, 8)}, 0, 0, 128, 96);
         pn.textures[0].a = {255, 255, 255};
         pn.textures[0].b = {32, 32, 32};
         s.panels.push_back(pn);
-        s.checks.nearest_truth = true;
+        // The same floor, plain and lit, its normals leaning toward the eye at the near edge and
+        // away from it at the far one: interpolated with the screen weights instead, the light
+        // falls off at the wrong depth (w runs from about 3 to 13 over the floor).
+        Mesh leaning = floor_quad(-1, 1.5, 1.5, -9, {1, 1});
+        const Vec3 near_n = unit({0, 0.5, 0.85}), far_n = unit({0, 0.5, -0.85});
+        leaning.normals = {near_n, near_n, far_n, far_n};
+        Panel lit = panel(view, {item(leaning, plain(kFloor))}, {}, 128, 0, 128, 96);
+        lit.lights = {sun({0, -0.5, -0.85}, {0.85, 0.85, 0.85})};
+        s.panels.push_back(lit);
+        s.checks.nearest_truth = true;  // on the textured panel
         add(s);
     }
     {
