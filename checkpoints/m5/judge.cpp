@@ -750,6 +750,9 @@ void judge_phong(Ctx& c) {
         if (same3(mine, want, 1e-9)) continue;
         std::string why, topic = "specular";
         const double cl = raster::dot(unit_or_zero(k.normal), unit_or_zero(k.to_light));
+        // The specular term raised from dot(N, L), or from Phong's dot(R, V), instead of dot(N, H).
+        const bool from_nl = cl > 0 && same3(mine, with_specular_base(k, cl), 1e-9);
+        const bool from_rv = cl > 0 && same3(mine, with_specular_base(k, phong_rv(k)), 1e-9);
         if (same3(mine, t_phong(k, true), 1e-9)) {
             topic = "halfway vector";
             why = ": H = L + V must be NORMALIZED before the dot product (its length is up to 2, and raised to the "
@@ -759,10 +762,8 @@ void judge_phong(Ctx& c) {
             why = ": dot(N, L) = " + num(cl) + " <= 0, so this light adds NOTHING: no diffuse and no specular either";
         } else if (same3(mine, Vec3{}, 1e-12)) {
             why = ": blinn_phong returned nothing";
-        } else if (cl > 0 && (same3(mine, with_specular_base(k, cl), 1e-9) || same3(mine, with_specular_base(k, phong_rv(k)), 1e-9))) {
+        } else if (from_nl || from_rv) {
             // Phong's dot(R, V) equals dot(N, L) where V = N: one message names both.
-            const bool from_nl = same3(mine, with_specular_base(k, cl), 1e-9);
-            const bool from_rv = same3(mine, with_specular_base(k, phong_rv(k)), 1e-9);
             why = std::string(": the specular term was raised from ") +
                   (from_nl && from_rv ? "dot(N, L) (or from Phong's dot(R, V), R = 2 dot(N, L) N - L: the same number "
                                         "here, where V = N)"
@@ -819,21 +820,23 @@ void judge_tangent(Ctx& c) {
         const auto& k = cases[i];
         const Vec3 mine = vec3(v, "perturb" + std::to_string(i)), want = t_perturb(k);
         if (same3(mine, want, 1e-9)) continue;
+        // T and B used as they are; B' orthogonal to n alone (the same numbers where B is already).
+        const bool raw_frame = same3(mine, t_perturb(k, 2), 1e-9), n_only_bitangent = same3(mine, t_perturb(k, 4), 1e-9);
         std::string why;
         if (same3(mine, t_perturb(k, 1), 1e-9)) {
             why = ": the texel was read as t / 255 in [0, 1]; a normal-map texel is 2 t / 255 - 1, in [-1, 1] (128 "
                   "means 0)";
-        } else if (same3(mine, t_perturb(k, 2), 1e-9) && same3(mine, t_perturb(k, 4), 1e-9)) {
+        } else if (raw_frame && n_only_bitangent) {
             why = ": B' is not orthogonal to T' (B used as it is, or made orthogonal to n alone: where the uv mapping is "
                   "sheared B is not perpendicular to T); make the frame orthonormal: T' = normalize(T - n dot(n, T)), "
                   "B' = cross(n, T') (negated when it points away from B)";
-        } else if (same3(mine, t_perturb(k, 2), 1e-9)) {
+        } else if (raw_frame) {
             why = ": T and B were used as they are; make the frame orthonormal: T' = normalize(T - n dot(n, T)), "
                   "B' = cross(n, T') (negated when it points away from B)";
         } else if (same3(mine, t_perturb(k, 3), 1e-9)) {
             why = ": B' = cross(n, T') points away from B here (dot(B', B) < 0) and was not negated: B' must agree with "
                   "B, if (dot(B', B) < 0) B' = -B', or a texel's y (green) tilts the normal the wrong way along v";
-        } else if (same3(mine, t_perturb(k, 4), 1e-9)) {
+        } else if (n_only_bitangent) {
             why = ": B' was made orthogonal to n but not to T' (B - n dot(n, B), normalized). Where the uv mapping is "
                   "sheared B is not perpendicular to T, so that B' is not either: take B' = cross(n, T') (negated when "
                   "it points away from B), or Gram-Schmidt B against both n and T'";
@@ -1193,22 +1196,19 @@ LightState wrong_light_state(const raster::Image& img, const Panel& p) {
             if (!h.tri) continue;
             const Vec3 n = unit_or_zero(raster::cross(h.tri->b - h.tri->a, h.tri->c - h.tri->a));
             const double c = raster::dot(n, to_light);
+            const Color base = p.items[std::size_t(h.tri->item)].material.color;
+            const Vec3 bv{double(base.r), double(base.g), double(base.b)};
+            const Color shadowed = to_color(mul(bv, p.ambient));  // ambient only
             if (c < -0.1 && p.lights.size() == 1) {
                 // A light adds nothing here; lit as if from the opposite side is L = +direction.
-                const Color base = p.items[std::size_t(h.tri->item)].material.color;
-                const Vec3 bv{double(base.r), double(base.g), double(base.b)};
-                const Color ambient_only = to_color(mul(bv, p.ambient));
                 const Color opposite = to_color(mul(bv, p.ambient + light->intensity * -c));
-                if (max_diff(opposite, ambient_only) >= 20) {
+                if (max_diff(opposite, shadowed) >= 20) {
                     const Color mine = img.at(p.x0 + x, p.y0 + y);
                     ++state.facing_away;
-                    state.lit_from_behind += max_diff(mine, opposite) < max_diff(mine, ambient_only);
+                    state.lit_from_behind += max_diff(mine, opposite) < max_diff(mine, shadowed);
                 }
             }
             if (!(c > 0)) continue;
-            const Color base = p.items[std::size_t(h.tri->item)].material.color;
-            const Vec3 bv{double(base.r), double(base.g), double(base.b)};
-            const Color shadowed = to_color(mul(bv, p.ambient));
             const Color lit = to_color(mul(bv, p.ambient + light->intensity * c));
             if (max_diff(lit, shadowed) < 12) continue;
             const Vec3 hit = p.camera.eye + ray(p, b, x + 0.5, y + 0.5) * h.t;
@@ -1224,7 +1224,6 @@ LightState wrong_light_state(const raster::Image& img, const Panel& p) {
             }
         }
     }
-    state.wrong = state.missing + state.spurious;
     return state;
 }
 
@@ -1660,7 +1659,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         if (s.checks.shadow_state) {
             const LightState state = wrong_light_state(*mine, panel);
             const LightState ref_state = ref_main == ref.images.end() ? LightState{} : wrong_light_state(ref_main->second, panel);
-            const long long ref_wrong = ref_state.wrong;
+            const long long ref_wrong = ref_state.wrong();
             // Surfaces facing away from the light drawn lit: L taken as +direction.
             if (double(state.lit_from_behind) > 10 + 1.3 * double(ref_state.lit_from_behind) &&
                 2 * state.lit_from_behind >= state.facing_away) {
@@ -1681,19 +1680,19 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                     "shadow factor); ambient (base times lighting.ambient) is added once, unshadowed");
             }
             c.j.measures["pixels in the wrong light state" + where + " (reference " + std::to_string(ref_wrong) + ", of " +
-                         std::to_string(state.counted) + " pixels that face the light)"] = double(state.wrong);
+                         std::to_string(state.counted) + " pixels that face the light)"] = double(state.wrong());
             const double allowed = double(ref_wrong) * 1.3 + 10 + 0.01 * double(state.counted);
-            if (double(state.wrong) > allowed) {
+            if (double(state.wrong()) > allowed) {
                 // Which way they are wrong says where to look: shadows missing, or shadows where
                 // the light arrives.
-                auto of_them = [&](long long k) { return (k == state.wrong ? std::string("all") : num(double(k))) + " of them"; };
+                auto of_them = [&](long long k) { return (k == state.wrong() ? std::string("all") : num(double(k))) + " of them"; };
                 std::string which;
-                if (3 * state.missing >= 2 * state.wrong) {
+                if (3 * state.missing >= 2 * state.wrong()) {
                     which = ": " + of_them(state.missing) +
                             " should be in shadow and are lit, so shadows are missing: a caster left out of the "
                             "depth pass (it draws every object that casts a shadow, with both faces), a bias so "
                             "large that shadows come off their casters (peter panning), or the comparison reversed";
-                } else if (3 * state.spurious >= 2 * state.wrong) {
+                } else if (3 * state.spurious >= 2 * state.wrong()) {
                     which = ": " + of_them(state.spurious) +
                             " are drawn in shadow where the light reaches them: spread over lit surfaces that is "
                             "shadow acne (a surface shadowing itself: too little bias); else a wrong light matrix, "
@@ -1703,7 +1702,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                     which = " (" + num(double(state.missing)) + " in shadow but lit, " + num(double(state.spurious)) +
                             " lit but drawn in shadow): a wrong light matrix or comparison, or the bias";
                 }
-                c.add("shadow", theme_advice.substr(0, theme_advice.find(": ")) + ": " + std::to_string(state.wrong) +
+                c.add("shadow", theme_advice.substr(0, theme_advice.find(": ")) + ": " + std::to_string(state.wrong()) +
                                     " of " + std::to_string(state.counted) + " pixels" + where +
                                     " are in the wrong light state against a ray cast to the light (reference " +
                                     std::to_string(ref_wrong) + ", allowed " + num(std::floor(allowed)) + ")" + which +

@@ -27,7 +27,6 @@ double truth_error(const raster::Image& img, const Panel& p, const Truth& t);
 // Pixels of panel p of `img` in the wrong light state against a ray cast to the light (the
 // panel's light that casts shadows), split by which way they are wrong, and the pixels counted.
 struct LightState {
-    long long wrong = 0;          // missing + spurious
     long long missing = 0;        // the ray to the light is blocked, but the pixel looks lit
     long long spurious = 0;       // the ray reaches the light, but the pixel looks shadowed
     long long counted = 0;        // pixels that face the light where lit and shadowed differ visibly
@@ -35,6 +34,7 @@ struct LightState {
     long long too_dark = 0;       // of those, nearer black than ambient alone: ambient shadowed too
     long long facing_away = 0;    // pixels clearly facing away from the panel's only light
     long long lit_from_behind = 0;  // of them, lit as if L were +direction
+    long long wrong() const { return missing + spurious; }
 };
 LightState wrong_light_state(const raster::Image& img, const Panel& p);
 }  // namespace m5cp

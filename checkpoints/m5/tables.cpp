@@ -221,7 +221,7 @@ std::string shadow_table() {
             const Panel p = box_on_floor(resolution, pcf);
             const cp::Artifacts a = render_panel(p, "lesson.shadows");
             const LightState state = wrong_light_state(a.images.at("main"), p);
-            const long long wrong = state.wrong, counted = state.counted;
+            const long long wrong = state.wrong(), counted = state.counted;
             compared = counted;
             rows << "| " << resolution << " | " << (pcf ? "3x3" : "off") << " | " << fixed(2 * kShadowRadius / resolution, 4)
                  << " | " << wrong << " | " << fixed(100.0 * double(wrong) / double(std::max(1LL, counted)), 2) << "% | "
