@@ -242,7 +242,7 @@ Built build_library(const std::string& m, const fs::path& root, const fs::path& 
             const auto d = cp::differing_pixels(img, expected);
             const long long n = std::count(d.begin(), d.end(), 1);
             if (n > 0 && img.width() == expected.width() && img.height() == expected.height()) {
-                b.lib.skeleton.push_back({"", id, n, img});
+                b.lib.skeleton.push_back({"", id, n, img, {}});
             }
         }
     }
@@ -273,7 +273,11 @@ Built build_library(const std::string& m, const fs::path& root, const fs::path& 
             const auto d = cp::differing_pixels(img, expected);
             const long long n = std::count(d.begin(), d.end(), 1);
             if (n > 0 && img.width() == expected.width() && img.height() == expected.height() && !like_skeleton(id, img)) {
-                pictures.push_back({src.name, id, n, img});
+                std::vector<std::string> clues;
+                for (const std::string& f : rec->second.findings) {
+                    if (cp::steers_diagnosis(f)) clues.push_back(f);
+                }
+                pictures.push_back({src.name, id, n, img, clues});
             }
         }
         // The gallery shows the first checkpoint the bug file names that has a picture (else

@@ -77,7 +77,7 @@ BugLibrary read_bug_library(const std::string& root, const std::string& mileston
         } else if (key == "skeleton") {
             const auto w = split_words(v);
             if (w.size() != 2) throw bad("skeleton needs a scene and a pixel count");
-            BugPicture p{"", w[0], std::stoll(w[1]), {}};
+            BugPicture p{"", w[0], std::stoll(w[1]), {}, {}};
             if (scene == "*" || scene == p.scene) p.image = raster::read_png((dir / "skeleton" / (p.scene + ".png")).string());
             lib.skeleton.push_back(std::move(p));
         } else if (key == "bug") {
@@ -105,11 +105,14 @@ BugLibrary read_bug_library(const std::string& root, const std::string& mileston
         } else if (key == "picture") {
             const auto w = split_words(v);
             if (w.size() != 2) throw bad("picture needs a scene and a pixel count");
-            BugPicture p{lib.bugs.back().name, w[0], std::stoll(w[1]), {}};
+            BugPicture p{lib.bugs.back().name, w[0], std::stoll(w[1]), {}, {}};
             if (scene == "*" || scene == p.scene) {
                 p.image = raster::read_png((dir / p.bug / (p.scene + ".png")).string());
             }
             lib.pictures.push_back(std::move(p));
+        } else if (key == "clue") {
+            if (lib.pictures.empty() || lib.pictures.back().bug != lib.bugs.back().name) throw bad("a clue before its picture");
+            lib.pictures.back().clues.push_back(v);
         } else {
             throw bad("unknown key '" + key + "'");
         }
@@ -135,7 +138,12 @@ std::string bug_library_index(const BugLibrary& lib) {
         out << "\n";
         if (!b.symptom_scene.empty()) out << "symptom\t" << b.symptom_scene << "\t" << b.symptom << "\n";
         for (const BugPicture& p : lib.pictures) {
-            if (p.bug == b.name) out << "picture\t" << p.scene << " " << p.differing << "\n";
+            if (p.bug != b.name) continue;
+            out << "picture\t" << p.scene << " " << p.differing << "\n";
+            for (std::string clue : p.clues) {
+                std::replace_if(clue.begin(), clue.end(), [](char ch) { return ch == '\n' || ch == '\t'; }, ' ');
+                out << "clue\t" << clue << "\n";
+            }
         }
     }
     return out.str();
@@ -193,38 +201,6 @@ std::vector<const BugPicture*> diagnose(const BugLibrary& lib, const std::string
     return out;
 }
 
-DiagnosisRates measure_rates(const BugLibrary& lib, const std::vector<raster::Image>& expected_per_picture,
-                             std::ostream* log) {
-    DiagnosisRates r;
-    for (std::size_t i = 0; i < lib.pictures.size(); ++i) {
-        const BugPicture& p = lib.pictures[i];
-        const raster::Image& expected = expected_per_picture.at(i);
-        const auto same = [&](const BugPicture* q) { return q->bug == p.bug || same_symptom(q->image, p.image, expected); };
-        const auto named = diagnose(lib, p.scene, p.image, expected);
-        ++r.in_sample_total;
-        const bool hit = !named.empty() && same(named.front());
-        r.in_sample_hits += hit;
-        if (log && !hit) *log << "  miss: " << p.bug << " on " << p.scene << " named " << (named.empty() ? "nothing" : named.front()->bug) << "\n";
-        const auto loo = diagnose(lib, p.scene, p.image, expected, p.bug);
-        ++r.loo_total;
-        for (const BugPicture* q : loo) {
-            if (same(q)) continue;
-            ++r.loo_wrong;
-            if (log) *log << "  leave-one-out: " << p.bug << " on " << p.scene << " named " << q->bug << "\n";
-            break;
-        }
-    }
-    return r;
-}
-
-std::string rates_text(const DiagnosisRates& r) {
-    return std::to_string(r.in_sample_hits) + " of " + std::to_string(r.in_sample_total) +
-           " pictures of the deliberate bugs diagnosed as their own bug (" + percent(r.in_sample_hits, r.in_sample_total) +
-           "); with each bug left out of the library, " + std::to_string(r.loo_wrong) + " of " +
-           std::to_string(r.loo_total) + " named a wrong bug instead of nothing (" + percent(r.loo_wrong, r.loo_total) +
-           ")";
-}
-
 namespace {
 
 // The TODO numbers in `text`'s "TODO 8", "TODOs 2 and 8", "TODOs 1-2" (3a counts as 3).
@@ -244,54 +220,104 @@ std::set<int> todo_numbers(const std::string& text) {
 
 }  // namespace
 
+bool steers_diagnosis(const std::string& finding) {
+    return finding.find("fix TODO") != std::string::npos || finding.find(kPassOwnChecks) != std::string::npos;
+}
+
+bool findings_admit(const KnownBug& b, const std::vector<std::string>& findings) {
+    // The TODOs a finding sends the student to first ("fix TODO N first"): a known bug of
+    // another TODO would contradict it. Other findings may name several TODOs a bug touches
+    // (a winding bug shows in both fills), so they filter nothing.
+    std::set<int> blamed;
+    // Their concepts too: such a finding is the prerequisite checkpoint's own, which tells
+    // the mistake from the numbers; a known bug of another concept only looks alike (adding
+    // the shadow bias draws much what reversing the comparison draws).
+    std::set<std::string> prerequisite_topics;
+    for (const std::string& f : findings) {
+        const std::size_t at = f.find("fix TODO");
+        if (at == std::string::npos) continue;
+        const std::set<int> t = todo_numbers(f.substr(at + 4, f.find(" first", at) - (at + 4)));
+        blamed.insert(t.begin(), t.end());
+        if (f.size() > 2 && f[0] == '[' && f.find(']') != std::string::npos) prerequisite_topics.insert(f.substr(1, f.find(']') - 1));
+    }
+    // The checkpoints a finding says the student's functions pass ("though the functions it is
+    // drawn with pass their own checks (m5.blinn_phong, m5.shadow_lookup)"): a known bug that
+    // fails one of them is not the student's, however alike the pictures.
+    std::set<std::string> passing;
+    static const std::regex checkpoint_id(R"(m[0-9]+\.[a-z0-9_]+)");
+    for (const std::string& f : findings) {
+        const std::string marker = std::string(kPassOwnChecks) + " (";
+        const std::size_t at = f.find(marker);
+        if (at == std::string::npos) continue;
+        const std::size_t from = at + marker.size(), to = f.find(')', from);
+        const std::string list = f.substr(from, to == std::string::npos ? std::string::npos : to - from);
+        for (auto it = std::sregex_iterator(list.begin(), list.end(), checkpoint_id); it != std::sregex_iterator(); ++it) {
+            passing.insert(it->str());
+        }
+    }
+    if (std::any_of(b.fails.begin(), b.fails.end(), [&](const std::string& id) { return passing.count(id) > 0; })) return false;
+    const std::set<int> own = todo_numbers(b.todo.empty() ? b.lesson : b.todo);
+    if (!blamed.empty() && !own.empty() && std::none_of(own.begin(), own.end(), [&](int t) { return blamed.count(t) > 0; })) {
+        return false;
+    }
+    return prerequisite_topics.empty() || b.says.empty() || prerequisite_topics.count(b.says) > 0;
+}
+
+namespace {
+
+// The bugs of `named` that a picture's findings leave in.
+std::vector<const BugPicture*> admitted(const BugLibrary& lib, std::vector<const BugPicture*> named,
+                                        const std::vector<std::string>& findings) {
+    std::erase_if(named, [&](const BugPicture* p) {
+        const KnownBug* b = lib.bug(p->bug);
+        return !b || !findings_admit(*b, findings);
+    });
+    return named;
+}
+
+}  // namespace
+
+DiagnosisRates measure_rates(const BugLibrary& lib, const std::vector<raster::Image>& expected_per_picture,
+                             std::ostream* log) {
+    DiagnosisRates r;
+    for (std::size_t i = 0; i < lib.pictures.size(); ++i) {
+        const BugPicture& p = lib.pictures[i];
+        const raster::Image& expected = expected_per_picture.at(i);
+        const auto same = [&](const BugPicture* q) { return q->bug == p.bug || same_symptom(q->image, p.image, expected); };
+        const auto named = admitted(lib, diagnose(lib, p.scene, p.image, expected), p.clues);
+        ++r.in_sample_total;
+        const bool hit = !named.empty() && same(named.front());
+        r.in_sample_hits += hit;
+        if (log && !hit) *log << "  miss: " << p.bug << " on " << p.scene << " named " << (named.empty() ? "nothing" : named.front()->bug) << "\n";
+        const auto loo = admitted(lib, diagnose(lib, p.scene, p.image, expected, p.bug), p.clues);
+        ++r.loo_total;
+        for (const BugPicture* q : loo) {
+            if (same(q)) continue;
+            ++r.loo_wrong;
+            if (log) *log << "  leave-one-out: " << p.bug << " on " << p.scene << " named " << q->bug << "\n";
+            break;
+        }
+    }
+    return r;
+}
+
+std::string rates_text(const DiagnosisRates& r) {
+    return std::to_string(r.in_sample_hits) + " of " + std::to_string(r.in_sample_total) +
+           " pictures of the deliberate bugs diagnosed as their own bug (" + percent(r.in_sample_hits, r.in_sample_total) +
+           "); with each bug left out of the library, " + std::to_string(r.loo_wrong) + " of " +
+           std::to_string(r.loo_total) + " named a wrong bug instead of nothing (" + percent(r.loo_wrong, r.loo_total) +
+           ")";
+}
+
+
 std::string diagnosis_for(const std::string& milestone, const std::string& id, const raster::Image& picture,
                           const raster::Image& expected, const std::vector<std::string>& findings) {
     try {
         const BugLibrary lib = read_bug_library(bug_pictures_dir(), milestone, id);
-        const auto named = diagnose(lib, id, picture, expected);
-        // The TODOs a finding sends the student to first ("fix TODO N first"): a known bug of
-        // another TODO would contradict it. Other findings may name several TODOs a bug touches
-        // (a winding bug shows in both fills), so they filter nothing.
-        std::set<int> blamed;
-        // Their concepts too: such a finding is the prerequisite checkpoint's own, which tells
-        // the mistake from the numbers; a known bug of another concept only looks alike (adding
-        // the shadow bias draws much what reversing the comparison draws).
-        std::set<std::string> prerequisite_topics;
-        for (const std::string& f : findings) {
-            const std::size_t at = f.find("fix TODO");
-            if (at == std::string::npos) continue;
-            const std::set<int> t = todo_numbers(f.substr(at + 4, f.find(" first", at) - (at + 4)));
-            blamed.insert(t.begin(), t.end());
-            if (f.size() > 2 && f[0] == '[' && f.find(']') != std::string::npos) prerequisite_topics.insert(f.substr(1, f.find(']') - 1));
-        }
-        // The checkpoints a finding says the student's functions pass ("though the functions it is
-        // drawn with pass their own checks (m5.blinn_phong, m5.shadow_lookup)"): a known bug that
-        // fails one of them is not the student's, however alike the pictures.
-        std::set<std::string> passing;
-        static const std::regex checkpoint_id(R"(m[0-9]+\.[a-z0-9_]+)");
-        for (const std::string& f : findings) {
-            const std::string marker = std::string(kPassOwnChecks) + " (";
-            const std::size_t at = f.find(marker);
-            if (at == std::string::npos) continue;
-            const std::size_t from = at + marker.size(), to = f.find(')', from);
-            const std::string list = f.substr(from, to == std::string::npos ? std::string::npos : to - from);
-            for (auto it = std::sregex_iterator(list.begin(), list.end(), checkpoint_id); it != std::sregex_iterator(); ++it) {
-                passing.insert(it->str());
-            }
-        }
         std::string out;
-        for (const BugPicture* p : named) {
+        for (const BugPicture* p : diagnose(lib, id, picture, expected)) {
             const KnownBug* b = lib.bug(p->bug);
-            if (!b) continue;
-            if (std::any_of(b->fails.begin(), b->fails.end(), [&](const std::string& id) { return passing.count(id) > 0; })) {
-                continue;
-            }
-            const std::set<int> own = todo_numbers(b->todo.empty() ? b->lesson : b->todo);
-            if (!blamed.empty() && !own.empty() &&
-                std::none_of(own.begin(), own.end(), [&](int t) { return blamed.count(t) > 0; })) {
-                continue;
-            }
-            if (!prerequisite_topics.empty() && !b->says.empty() && prerequisite_topics.count(b->says) == 0) continue;
+            if (!b || !findings_admit(*b, findings)) continue;
             out += out.empty() ? "your picture matches what happens with a known bug (" : " Or with the known bug (";
             out += b->name + "): " + b->summary;
             if (!out.empty() && out.back() != '.') out += '.';

@@ -49,9 +49,15 @@ struct BugPicture {
     std::string bug, scene;
     long long differing = 0;  // pixels that differ from the expected image (beyond kPixelNoise)
     raster::Image image;      // empty until loaded
+    // The findings of that checkpoint that steer the diagnosis (steers_diagnosis): what the
+    // student with this bug is told beside the picture, so that the rates measure the line
+    // the student reads.
+    std::vector<std::string> clues;
 };
 
-// How well the diagnosis does on the deliberate bugs themselves.
+// How well the diagnosis does on the deliberate bugs themselves, as diagnosis_for names them
+// (the picture's match, then its checkpoint's findings, the picture's clues, leaving out the
+// bugs they rule out).
 //  in-sample: every library picture, diagnosed against the full library, must name its own
 //    bug (or a bug whose picture on that scene is identical).
 //  leave-one-out: every library picture, diagnosed with its own bug removed from the library,
@@ -121,6 +127,13 @@ bool same_symptom(const raster::Image& a, const raster::Image& b, const raster::
 // With `log`, each miss and each wrong claim is written there, one line each.
 DiagnosisRates measure_rates(const BugLibrary& lib, const std::vector<raster::Image>& expected_per_picture,
                              std::ostream* log = nullptr);
+
+// Whether a printed finding steers the diagnosis: it sends the student to another TODO first
+// ("fix TODO 7 first") or says the functions a picture is drawn with pass their own checks.
+bool steers_diagnosis(const std::string& finding);
+
+// Whether a checkpoint's findings leave known bug `b` in the diagnosis (see diagnosis_for).
+bool findings_admit(const KnownBug& b, const std::vector<std::string>& findings);
 
 // The harness's hook: for a failing checkpoint of `milestone`, the sentence that names the
 // matching known bug(s) and the lesson section to reread, or "" when none matches (or the

@@ -65,7 +65,7 @@ raster::Image texture_image(const TextureSpec& t) {
                     const double cw = double(w) / cells, ch = double(h) / cells;
                     const double lx = (x + 0.5) / cw - std::floor((x + 0.5) / cw) - 0.5;
                     const double ly = (y + 0.5) / ch - std::floor((y + 0.5) / ch) - 0.5;
-                    const double R = 0.4, A = 0.1, q = (lx * lx + ly * ly) / (R * R);
+                    const double R = 0.4, A = t.bump_height, q = (lx * lx + ly * ly) / (R * R);
                     Vec3 n{0, 0, 1};
                     if (q < 1) n = unit(Vec3{4 * A * lx * (1 - q) / (R * R), 4 * A * ly * (1 - q) / (R * R), 1});
                     c = {byte(255 * (n.x + 1) / 2), byte(255 * (n.y + 1) / 2), byte(255 * (n.z + 1) / 2)};
@@ -145,6 +145,30 @@ Mesh uv_sphere(int segments) {
 }
 
 namespace {
+
+// A prism of `sides` faces around the y axis (radius 1, y from -height to height, no caps) with
+// SMOOTH normals: each corner's normal points straight out from the axis, so inside a face the
+// interpolated normal is shorter than 1 (cos(pi / sides) at the face's middle). u goes `turns`
+// times around, v from 0 at the top to 1 at the bottom.
+Mesh smooth_prism(int sides, double height, double turns) {
+    Mesh m;
+    const double pi = std::numbers::pi;
+    for (int r = 0; r <= 1; ++r) {
+        for (int s = 0; s <= sides; ++s) {
+            const double phi = 2 * pi * s / sides;
+            const Vec3 out{std::cos(phi), 0, -std::sin(phi)};
+            m.positions.push_back(out + Vec3{0, r == 0 ? height : -height, 0});
+            m.normals.push_back(out);
+            m.uvs.push_back({turns * s / sides, double(r)});
+        }
+    }
+    for (int s = 0; s < sides; ++s) {
+        const int top = s, bottom = sides + 1 + s;
+        m.triangles.push_back({top, bottom, bottom + 1});
+        m.triangles.push_back({top, bottom + 1, top + 1});
+    }
+    return m;
+}
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -470,10 +494,14 @@ std::vector<Scene> build() {
         add(s);
     }
     {
-        Scene s = picture("m5.normal_map", "A normal-mapped quad, its uv sheared (left) and square but turned (right)",
+        Scene s = picture("m5.normal_map",
+                          "A normal-mapped quad, its uv sheared (left) and square but turned (middle), and a coarse prism "
+                          "with smooth normals (right)",
                           "T and B from the WORLD positions and uv; T' = T made orthogonal to N, B' = cross(N, T') (not "
-                          "B itself: with sheared uv it is not perpendicular to T); the texel as 2 t / 255 - 1",
-                          {7, 6, 5, 9}, 256, 96);
+                          "B itself: with sheared uv it is not perpendicular to T); the texel as 2 t / 255 - 1; N "
+                          "normalized before perturb_normal (inside a triangle of the prism the interpolated normal is "
+                          "shorter than 1)",
+                          {7, 6, 5, 9}, 384, 96);
         for (int p = 0; p < 2; ++p) {
             Mesh q = quad({-1.7, -1.2, 0}, {1.7, -1.2, 0}, {1.7, 1.2, 0}, {-1.7, 1.2, 0});
             // uv at the corners: v grows down the quad; the sheared one slides u by 0.9 per v.
@@ -492,6 +520,19 @@ std::vector<Scene> build() {
             pn.lights = {sun({-0.6, -0.5, -0.8}, {0.8, 0.8, 0.8})};
             s.panels.push_back(pn);
         }
+        // Six faces with smooth normals: in the middle of a face the interpolated normal has
+        // length cos(30 degrees), so a normal not normalized before perturb_normal tilts the bumps
+        // too far from it (the bumps' slopes weigh more against a shorter n).
+        MaterialSpec m = plain({200, 180, 160}, {140, 140, 140}, 24);
+        m.normal_map = 0;
+        Item prism = item(smooth_prism(4, 1.1, 4), m);
+        prism.axis = {0, 1, 0};
+        prism.angle = 0.6;
+        TextureSpec bumps = tex(Pattern::kBumps, 32, 32, 1);
+        bumps.bump_height = 0.2;
+        Panel pn = panel(cam({0.02, 0.03, 4.2}), {prism}, {bumps}, 256, 0, 128, 96);
+        pn.lights = {sun({-0.6, -0.5, -0.8}, {0.8, 0.8, 0.8})};
+        s.panels.push_back(pn);
         s.demo = true;
         add(s);
     }

@@ -44,6 +44,7 @@ struct TextureSpec {
     Color a{230, 200, 150}, b{60, 40, 30};
     Wrap wrap_u = Wrap::kRepeat, wrap_v = Wrap::kRepeat;
     std::uint32_t seed = 1;  // kNoise
+    double bump_height = 0.1;  // kBumps: each bump's height, in cells
 };
 raster::Image texture_image(const TextureSpec& t);
 
