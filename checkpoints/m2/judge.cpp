@@ -255,10 +255,12 @@ cp::Finding finding(std::string topic, std::string message, const std::string& t
 }
 
 // Collects up to a few example pixels of one kind of mistake into one finding.
+// `what` says what the pixels are ("inside a triangle are not filled"); `one` is its singular
+// ("inside a triangle is not filled"), for a count of 1.
 struct Tally {
-    Tally(std::string t, std::string w, std::string td = "", std::string h = "")
-        : topic(std::move(t)), what(std::move(w)), todo(std::move(td)), hint(std::move(h)) {}
-    std::string topic, what, todo, hint;
+    Tally(std::string t, std::string w, std::string o, std::string td = "", std::string h = "")
+        : topic(std::move(t)), what(std::move(w)), one(std::move(o)), todo(std::move(td)), hint(std::move(h)) {}
+    std::string topic, what, one, todo, hint;
     long long count = 0;
     std::string examples;
     void add(int x, int y, const std::string& detail = "") {
@@ -268,7 +270,9 @@ struct Tally {
         }
     }
     void report(cp::Judgement& j) const {
-        if (count > 0) j.findings.push_back(finding(topic, std::to_string(count) + " pixel(s) " + what + ", e.g. " + examples, todo, hint));
+        if (count == 0) return;
+        const std::string said = count == 1 ? "1 pixel " + one : std::to_string(count) + " pixels " + what;
+        j.findings.push_back(finding(topic, said + ", e.g. " + examples, todo, hint));
     }
 };
 
@@ -409,45 +413,54 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
     // Advice per kind of mistake; the generic topics of m2.huge, m2.degenerate and m2.nonfinite
     // keep their scene's hint.
     const bool plain = topic == "coverage";
-    Tally missing{topic, "inside a triangle are not filled", plain ? "TODO 4" : "",
+    Tally missing{topic, "inside a triangle are not filled", "inside a triangle is not filled", plain ? "TODO 4" : "",
                   plain ? "Test every pixel center of the bounding box against the three edge functions: a center is "
                           "in when none is negative (a zero: the fill rule decides)." : ""};
-    Tally missing_gradient{topic, "inside a gradient triangle were left as they were: fill_triangle_gradient did not "
-                                  "draw them", "TODO 5",
+    Tally missing_gradient{topic,
+                           "inside a gradient triangle were left as they were: fill_triangle_gradient did not draw them",
+                           "inside a gradient triangle was left as it was: fill_triangle_gradient did not draw it",
+                           "TODO 5",
                            "fill_triangle_gradient covers exactly the pixels fill_triangle covers: set up, bounding box, "
                            "the same coverage test; only the color differs."};
-    Tally extra{topic, "outside every triangle are filled", plain ? "TODO 4" : "",
+    Tally extra{topic, "outside every triangle are filled", "outside every triangle is filled", plain ? "TODO 4" : "",
                 plain ? "A pixel is drawn only when its center is inside all three edges; check the signs and which "
                         "edge function belongs to which pair of vertices." : ""};
-    Tally rule{"fill rule", "have their center exactly on an edge and are decided wrongly (top and left edges include "
-                            "such centers, bottom and right edges exclude them)",
-               "TODO 4b", "Once the area is positive, edge a->b is top when b.y == a.y and b.x > a.x, left when "
-                          "b.y < a.y; a zero edge value counts only for those (set_up marks them, covers applies it)."};
-    Tally last_row{"bounding box", "in the last row or column of a triangle's bounding box are missing", "TODO 3",
+    const std::string rule_rest = " decided wrongly (top and left edges include such centers, bottom and right edges "
+                                  "exclude them)";
+    Tally rule{"fill rule", "have their center exactly on an edge and are" + rule_rest,
+               "has its center exactly on an edge and is" + rule_rest, "TODO 4b",
+               "Once the area is positive, edge a->b is top when b.y == a.y and b.x > a.x, left when b.y < a.y; a zero "
+               "edge value counts only for those (set_up marks them, covers applies it)."};
+    Tally last_row{"bounding box", "in the last row or column of a triangle's bounding box are missing",
+                   "in the last row or column of a triangle's bounding box is missing", "TODO 3",
                    "PixelRect's ends are exclusive: x1 is one past the last column whose center is in range."};
-    Tally colors{"barycentric", "have the wrong interpolated color", "TODO 5",
+    Tally colors{"barycentric", "have the wrong interpolated color", "has the wrong interpolated color", "TODO 5",
                  "The weight of vertex k is the edge value of the edge OPPOSITE it divided by area2, in floating "
                  "point (integer division gives 0); round each channel to nearest with raster::to_channel."};
     const std::string aa_hint = "Samples sit at (x + (i + 0.5) / n, y + (j + 0.5) / n); coverage = covered samples / "
                                 "(n * n), blended over the pixel with Image::blend.";
-    Tally aa_wrong{"supersampling", "have the wrong coverage for their number of covered samples", "TODO 6", aa_hint};
-    Tally aa_unwritten{"supersampling", "have covered samples but fill_triangle_aa never wrote them", "TODO 6", aa_hint};
-    Tally aa_box{"aa bounding box",
-                 "have covered samples but were never written, and their centers lie outside the triangle's "
-                 "bounding_box(): that box holds the pixels whose CENTERS can be inside, but a sample off the "
-                 "center reaches the pixels around it too. fill_triangle_aa must visit every pixel the "
-                 "triangle's box overlaps",
-                 "TODO 6", "Loop from floor(min / 16) to ceil(max / 16) in sixteenths on each axis, clamped to the "
-                           "image: every pixel the vertices' box overlaps, not bounding_box()."};
-    Tally aa_set{"supersampling",
-                 "show only the last triangle's coverage over black, as if the pixel was set instead of "
-                 "blended: use Image::blend, which mixes the color over what is already there",
-                 "TODO 6", "img.blend(x, y, c, coverage) mixes over the pixel's current color; do not set a color mixed with black."};
-    Tally aa_rule{"fill rule",
-                  "have samples exactly on an edge counted wrongly (the coverage matches counting every such "
-                  "sample, or none): apply the top-left rule to each sample, as to a pixel center",
-                  "TODO 6", "Test each sample with the same covers() as a pixel center: a sample on an edge counts "
-                            "only for a top or left edge."};
+    Tally aa_wrong{"supersampling", "have the wrong coverage for their number of covered samples",
+                   "has the wrong coverage for its number of covered samples", "TODO 6", aa_hint};
+    Tally aa_unwritten{"supersampling", "have covered samples but fill_triangle_aa never wrote them",
+                       "has covered samples but fill_triangle_aa never wrote it", "TODO 6", aa_hint};
+    const std::string box_rest = " outside the triangle's bounding_box(): that box holds the pixels whose CENTERS can "
+                                 "be inside, but a sample off the center reaches the pixels around it too. "
+                                 "fill_triangle_aa must visit every pixel the triangle's box overlaps";
+    Tally aa_box{"aa bounding box", "have covered samples but were never written, and their centers lie" + box_rest,
+                 "has covered samples but was never written, and its center lies" + box_rest, "TODO 6",
+                 "Loop from floor(min / 16) to ceil(max / 16) in sixteenths on each axis, clamped to the image: every "
+                 "pixel the vertices' box overlaps, not bounding_box()."};
+    const std::string set_rest = " only the last triangle's coverage over black, as if the pixel was set instead of "
+                                 "blended: use Image::blend, which mixes the color over what is already there";
+    Tally aa_set{"supersampling", "show" + set_rest, "shows" + set_rest, "TODO 6",
+                 "img.blend(x, y, c, coverage) mixes over the pixel's current color; do not set a color mixed with "
+                 "black."};
+    const std::string aa_rule_rest = " samples exactly on an edge counted wrongly (the coverage matches counting every "
+                                     "such sample, or none): apply the top-left rule to each sample, as to a pixel "
+                                     "center";
+    Tally aa_rule{"fill rule", "have" + aa_rule_rest, "has" + aa_rule_rest, "TODO 6",
+                  "Test each sample with the same covers() as a pixel center: a sample on an edge counts only for a "
+                  "top or left edge."};
     bool has_aa = false, has_gradient = false;
 
     for (int y = 0; y < s.height; ++y) {
@@ -569,8 +582,10 @@ void measure_area_error(const Scene& s, const std::vector<Shape>& shapes, const 
 void judge_watertight(const Scene& s, const std::vector<Shape>& shapes, const Image& count, cp::Judgement& j) {
     const std::string rule_hint = "Two triangles see a shared edge in opposite directions: with the top-left rule exactly "
                                   "one of them counts a center on it. Compare edge values with 0 exactly (integers).";
-    Tally twice{"fill rule", "are covered by two or more triangles (double coverage on a shared edge)", "TODO 4b", rule_hint};
-    Tally gaps{"watertight", "inside the mesh are covered by no triangle (a gap on a shared edge)", "TODO 4b", rule_hint};
+    Tally twice{"fill rule", "are covered by two or more triangles (double coverage on a shared edge)",
+                "is covered by two or more triangles (double coverage on a shared edge)", "TODO 4b", rule_hint};
+    Tally gaps{"watertight", "inside the mesh are covered by no triangle (a gap on a shared edge)",
+               "inside the mesh is covered by no triangle (a gap on a shared edge)", "TODO 4b", rule_hint};
     // The outer boundary: edges used by one triangle only.
     std::vector<std::pair<Vec2, Vec2>> boundary;
     auto same = [](Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; };

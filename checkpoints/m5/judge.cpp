@@ -1626,6 +1626,15 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                       "shaded)";
             } else if (name == "mipmap_builds") {
                 why = ": one pyramid per texture, built the first time a mip filter reads a level above 0";
+            } else if (name == "specular_terms" || name == "shadow_lookups") {
+                // Fewer than the reference's: where does a light arrive?
+                why = name == "specular_terms"
+                          ? ": one per light on each shaded fragment of a material with a specular color, where "
+                            "dot(N, L) > 0 with L = -normalize(direction), the way TOWARD the light (a light's direction "
+                            "is the way its rays travel)"
+                          : ": one per shadow-casting light on each shaded fragment, where dot(N, L) > 0 with L = "
+                            "-normalize(direction), the way TOWARD the light (a light's direction is the way its rays "
+                            "travel)";
             } else if (name == "triangles_drawn") {
                 why = ": one per fan triangle passed to fill_triangle, counted once (by draw_scene or inside fill_triangle, "
                       "not both)";

@@ -526,7 +526,7 @@ std::vector<Scene> build() {
         MaterialSpec m = plain({200, 180, 160}, {140, 140, 140}, 24);
         m.normal_map = 0;
         Item prism = item(smooth_prism(4, 1.1, 4), m);
-        prism.axis = {0, 1, 0};
+        prism.axis = {0.45, 1, 0.25};
         prism.angle = 0.6;
         TextureSpec bumps = tex(Pattern::kBumps, 32, 32, 1);
         bumps.bump_height = 0.2;
