@@ -288,7 +288,12 @@ std::vector<Scene> build() {
         Scene s = picture("m4.gouraud_sphere", "A sphere, Gouraud-shaded: lit per vertex, colors interpolated",
                           "light each vertex once with its normal; interpolate the lit colors perspective-correctly",
                           {5, 4, 8, 9}, 96, 96);
-        Panel pn = panel(cam({0.03, 0.05, 3.2}), {item(sphere_mesh(16, false))}, 0, 0, 96, 96, Shade::kGouraud);
+        // Turned and moved, so that model-space normals or positions light the wrong vertices.
+        Item ball = item(sphere_mesh(16, false));
+        ball.axis = {0.3, 1, 0.2};
+        ball.angle = 0.8;
+        ball.position = {0.25, -0.15, 0};
+        Panel pn = panel(cam({0.03, 0.05, 3.2}), {ball}, 0, 0, 96, 96, Shade::kGouraud);
         pn.cull = true;
         pn.lights = {directional({-0.6, -0.7, -1}, {0.5, 0.5, 0.5}), point({2.5, -1.5, 2}, {0.4, 0.3, 0.2})};
         s.panels.push_back(pn);
@@ -299,7 +304,12 @@ std::vector<Scene> build() {
         Scene s = picture("m4.per_pixel_sphere", "A coarse sphere lit per pixel by a point light",
                           "interpolate the normal, NORMALIZE it, then light; the world position too for a point light",
                           {8, 5, 4, 3}, 96, 96);
-        Panel pn = panel(cam({0.03, 0.05, 3.2}), {item(sphere_mesh(8, false))}, 0, 0, 96, 96, Shade::kPerPixel);
+        // Turned and moved, so that a model-space position aims the point light at the wrong place.
+        Item ball = item(sphere_mesh(8, false));
+        ball.axis = {1, 0.2, 0.5};
+        ball.angle = 0.7;
+        ball.position = {-0.3, 0.2, 0.1};
+        Panel pn = panel(cam({0.03, 0.05, 3.2}), {ball}, 0, 0, 96, 96, Shade::kPerPixel);
         pn.cull = true;
         pn.lights = {point({2, 2.2, 2.5})};
         s.panels.push_back(pn);
@@ -437,8 +447,11 @@ std::vector<Scene> build() {
         add(s);
     }
     {
-        Scene s = picture("m4.near_eye", "A vertex almost at the eye, one behind it: clipped, with attributes",
-                          "clip in clip space with every attribute; perspective weights stay finite", {7, 3, 9}, 96, 96);
+        Scene s = picture("m4.near_eye",
+                          "A vertex almost at the eye, one behind it: clipped, with attributes (right: back faces culled)",
+                          "clip in clip space with every attribute; perspective weights stay finite; cull each fan "
+                          "triangle after clipping, by its own screen positions",
+                          {7, 3, 9}, 192, 96);
         Mesh m;
         m.positions = {{-0.004, -0.003, -0.0101}, {1.5, -1.2, -3}, {-1.2, 1.6, -4},   // one just past near
                        {0.0, 0.0, 0.0},           {-2.0, -1.5, -5}, {2.2, -0.3, -6},  // one AT the eye
@@ -448,6 +461,15 @@ std::vector<Scene> build() {
                            {255, 0, 255}, {255, 255, 255}, {250, 120, 0}, {0, 120, 250}};
         Panel pn = panel(cam({0, 0, 0}, {0.001, 0.0007, -1}, 0.01, 50), {item(m)}, 0, 0, 96, 96, Shade::kVertexColor);
         s.panels.push_back(pn);
+        // Right: back faces culled, the triangle behind the eye wound to face it. Culling must
+        // keep both clipped triangles, which it does only on the fan triangles' own screen
+        // positions: culling before clipping (a vertex behind the eye flips the projected
+        // winding), or a fan that reverses the polygon's winding, drops them.
+        Mesh facing = m;
+        facing.triangles = {{0, 1, 2}, {6, 8, 7}};
+        Panel culled = panel(pn.camera, {item(facing)}, 96, 0, 96, 96, Shade::kVertexColor);
+        culled.cull = true;
+        s.panels.push_back(culled);
         add(s);
     }
     {
@@ -594,6 +616,7 @@ std::vector<ClipCase> clip_cases() {
 
 std::vector<LambertCase> lambert_cases() {
     const Color base{200, 150, 100};
+    constexpr double kInf = std::numeric_limits<double>::infinity();
     std::vector<LambertCase> cases = {
         {{0.1, 0.1, 0.1}, {directional({0, 0, -1}, {1, 1, 1})}, base, {0, 0, 0}, {0, 0, 1}},        // head on
         {{0.1, 0.1, 0.1}, {directional({0, 0, 1}, {1, 1, 1})}, base, {0, 0, 0}, {0, 0, 1}},         // from behind
@@ -607,6 +630,12 @@ std::vector<LambertCase> lambert_cases() {
         {{0.1, 0.1, 0.1}, {directional({0, 0, 0})}, base, {0, 0, 0}, {0, 1, 0}},  // zero light direction
         // short normal: as an interpolated one is between vertices
         {{0.1, 0.1, 0.1}, {directional({-1, 0, -1}, {1, 1, 1})}, base, {0, 0, 0}, {0, 0, 0.5}},
+        // one light in front and one behind: each is clamped at 0 on its own, then they add
+        {{0.1, 0.1, 0.1}, {directional({0, 0, -1}, {1, 1, 1}), directional({0.3, 0, 1}, {0.8, 0.7, 0.6})}, base, {0, 0, 0},
+         {0, 0, 1}},
+        // an infinite light exactly along the surface (N . L = 0): it adds nothing, never NaN
+        {{0.1, 0.1, 0.1}, {directional({0, 0, -1}, {0.5, 0.5, 0.5}), directional({1, 0, 0}, {kInf, kInf, kInf})}, base,
+         {0, 0, 0}, {0, 0, 1}},
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m4.lambert");
