@@ -774,6 +774,13 @@ void judge_phong(Ctx& c) {
         } else if (const double s = implied_shininess(k, mine); cl > 0 && std::isfinite(s)) {
             why = ": the diffuse part is right and the specular part is max(0, dot(N, H))^" + num(s) +
                   ", not ^shininess (" + num(k.shininess) + "): raise dot(N, H) to the material's shininess itself";
+        } else if (const double nh = raster::dot(unit_or_zero(k.normal),
+                                                 unit_or_zero(unit_or_zero(k.to_light) + unit_or_zero(k.to_eye)));
+                   cl > 0 && nh < 0 && !same3(mine, want, 1e-9)) {
+            topic = "specular";
+            why = ": dot(N, H) = " + num(nh) + " < 0 here (the eye is on the far side of the surface): the specular "
+                  "part is max(0, dot(N, H))^shininess = 0; clamp dot(N, H) at 0 BEFORE raising it (an even power "
+                  "of a negative number is positive)";
         } else if ((raster::length(k.normal) != 1 || raster::length(k.to_eye) != 1 || raster::length(k.to_light) != 1) &&
                    same3(mine, unnormalized_phong(k), 1e-9)) {
             why = ": normalize N, V and L first (here they are not of length 1; a zero one makes the light add nothing)";
@@ -806,8 +813,11 @@ void judge_tangent(Ctx& c) {
                                        str(k.uv[0]) + ", " + str(k.uv[1]) + ", " + str(k.uv[2]) + ")";
             if (valid != want.valid) {
                 out.add("tangent frame", "TODO 7: " + inputs + " is " + (valid ? "" : "not ") + "valid, expected " +
-                                             (want.valid ? "valid" : "NOT valid: r = du1 dv2 - du2 dv1 is 0 or not finite "
-                                                                     "(or T or B is not finite), so there is no tangent frame"));
+                                             (want.valid ? "valid: r = du1 dv2 - du2 dv1 is small here but neither 0 nor "
+                                                           "infinite, and T and B are finite; a frame is invalid only when "
+                                                           "r == 0 exactly or something is not finite (no epsilon)"
+                                                         : "NOT valid: r = du1 dv2 - du2 dv1 is 0 or not finite "
+                                                           "(or T or B is not finite), so there is no tangent frame"));
             } else {
                 out.add("tangent frame", "TODO 7: " + inputs + " gave T " + str(t) + ", B " + str(b) + "; expected T " + str(want.t) +
                                              ", B " + str(want.b) + " (T = (e1 dv2 - e2 dv1) / r, B = (e2 du1 - e1 du2) / r)");
@@ -961,6 +971,18 @@ void judge_shadow(Ctx& c) {
             topic = "shadow bias";
             why = ": here c = 0.01, tan(theta) = 99.99 is capped at 10: bias = 0.02 + 0.02 * 10 = 0.22 world units, and the "
                   "point 0.3 below the floor is in shadow";
+        } else if (i == 16) {
+            why = ": the point is 0.05 below the floor, so each of the 4 texels of the 3x3 inside the map shadows it, and "
+                  "the 5 outside the map are lit (not the edge texels again): 5 of 9";
+        } else if (i == 17) {
+            why = ": p falls in column -1, just outside the map, but with PCF the 3x3 around it still has column 0's 3 "
+                  "texels inside the map, which shadow it: 6 of 9 (only a 3x3 wholly outside the map is wholly lit)";
+        } else if (i == 18) {
+            why = ": here x = -0.3 texels: column floor(-0.3) = -1 is outside the map, so the point is lit; a cast to int "
+                  "truncates toward zero and reads column 0";
+        } else if (i == 19) {
+            why = ": the texel was never drawn (kClearKey), so the point is lit whatever its depth (here d = 1.125, beyond "
+                  "the box's far side): kClearKey is not the depth 1";
         } else if (k.pcf) {
             why = ": with PCF the factor is the lit fraction of the 3x3 texels around the one p falls in (a texel outside "
                   "the map, or never drawn, is lit)";

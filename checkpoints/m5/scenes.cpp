@@ -1071,6 +1071,7 @@ std::vector<PhongCase> phong_cases() {
         {base, spec, 32, {0, 0, 1}, {0, 0, 0}, {0, 0, 1}, one},                   // zero view vector
         {base, spec, 16, {0, 0, 1}, {0, -0.6, -0.8}, {0, 0.6, 0.8}, one},         // V = -L: H is zero
         {base, spec, 1, {0, 0, 1}, {0.8, 0, 0.6}, {-0.8, 0, 0.6}, one},           // shininess 1
+        {base, spec, 32, {0, 0, 1}, {-1, 0, -0.5}, {1, 0, 0.05}, one},            // c > 0 but dot(N, H) < 0: no specular
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m5.blinn_phong");
@@ -1094,6 +1095,8 @@ std::vector<FrameCase> frame_cases() {
         {{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}, {Vec2{0, 0}, Vec2{kNaN, 0}, Vec2{0, 1}}},      // NaN: none
         {{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}, {Vec2{0, 0}, Vec2{1e-300, 0}, Vec2{0, 1e-300}}},  // r underflows to 0: none
         {{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}, {Vec2{1e7, 1e7}, Vec2{1e7 + 1, 1e7}, Vec2{1e7, 1e7 + 1}}},
+        // r = 1e-8: small, but neither 0 nor infinite, so the frame is valid (T and B 1e4 long)
+        {{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}, {Vec2{0, 0}, Vec2{1e-4, 0}, Vec2{0, 1e-4}}},
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m5.normal_maps.frame");
@@ -1180,6 +1183,11 @@ std::vector<ShadowCase> shadow_cases() {
         // without to_screen's flip) swaps one of these two.
         {{0.5, 0, 0.5}, up, 0.02, 0.02, false},       // under the occluder (1, 2): shadowed
         {{-0.5, 0, 0.5}, up, 0.02, 0.02, false},      // beside it, (2, 2): lit
+        // 0.05 below the floor, so every floor texel shadows the point; outside the map is lit.
+        {{1.5, -0.05, -1.5}, up, 0.02, 0.02, true},   // PCF at the corner (0, 0): the 5 outside lit, 5 of 9
+        {{0.5, -0.05, -2.5}, up, 0.02, 0.02, true},   // PCF centered at column -1: column 0's 3 texels in the map, 6 of 9
+        {{0.5, -0.05, -2.3}, up, 0.02, 0.02, false},  // x = -0.3: column floor(-0.3) = -1, outside: lit (truncating gives 0)
+        {{1.5, -2.5, 1.5}, up, 0.02, 0.02, false},    // never drawn, the point beyond the box (d = 1.125): lit
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m5.shadow_lookup");
