@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
+#include <sstream>
 #include <numbers>
 #include <optional>
 #include <set>
@@ -118,7 +120,11 @@ void judge_group(Group g, Ctx& c) {
                       "TODO 1: depth_key(" + std::string(kFormatNames[k.format]) + ", z_ndc " + num(k.z_ndc) + ", w " +
                           num(k.w) + ") gave " + num(mine) + ", expected " + num(want) +
                           (other.empty() ? "" : " (that is the key of " + other + ")") +
-                          (std::isnan(k.z_ndc) ? ": NaN must give kClearKey" : "") + truncated);
+                          (std::isnan(k.z_ndc) ? ": NaN must give kClearKey"
+                           : k.format == 3 && (!(k.w > 0) || !std::isfinite(k.w))
+                               ? ": the 1/w key needs a w > 0 and finite; any other w gives kClearKey"
+                               : "") +
+                          truncated);
             }
             break;
         }
@@ -167,23 +173,39 @@ void judge_group(Group g, Ctx& c) {
             break;
         }
         case Group::kWeights: {
-            const std::array<double, 3> ls[] = {{0.2, 0.3, 0.5}, {1, 0, 0}, {0.25, 0.25, 0.5}, {0.6, 0.3, 0.1}};
-            const std::array<double, 3> ws[] = {{1, 2, 4}, {3, 1, 1}, {2, 2, 2}, {0.01, 10, 100}};
-            for (int i = 0; i < 4; ++i) {
+            // The last three: a w of 0, one whose 1 / w overflows, a NaN: the screen weights.
+            constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+            const std::array<double, 3> ls[] = {{0.2, 0.3, 0.5}, {1, 0, 0},       {0.25, 0.25, 0.5}, {0.6, 0.3, 0.1},
+                                                {0.2, 0.3, 0.5}, {0.5, 0.5, 0}, {0.3, 0.3, 0.4}};
+            const std::array<double, 3> ws[] = {{1, 2, 4}, {3, 1, 1}, {2, 2, 2}, {0.01, 10, 100},
+                                                {0, 1, 1},   {1e-320, 1, 1}, {kNaN, 1, 1}};
+            for (int i = 0; i < 7; ++i) {
                 double q[3], sum = 0;
                 for (int k = 0; k < 3; ++k) sum += q[k] = ls[i][k] / ws[i][k];
+                const bool fallback = !(sum > 0) || !std::isfinite(sum);
+                // num() shows numbers below 1e-12 as 0; a w of 1e-320 must read as what it is.
+                auto tiny = [](double x) {
+                    std::ostringstream o;
+                    o << x;
+                    return x != 0 && std::abs(x) < 1e-12 ? o.str() : num(x);
+                };
+                double want[3];
+                for (int k = 0; k < 3; ++k) want[k] = fallback ? ls[i][k] : q[k] / sum;
                 bool ok = true, screen = true;
                 for (int k = 0; k < 3; ++k) {
                     const double mine = get(v, "w" + std::to_string(i) + "." + std::to_string(k));
-                    ok &= close(mine, q[k] / sum, 1e-9);
+                    ok &= close(mine, want[k], 1e-9);
                     screen &= close(mine, ls[i][k], 1e-12);
                 }
                 if (!ok) {
-                    c.add("perspective", "TODO 3: perspective_weights((" + num(ls[i][0]) + ", " + num(ls[i][1]) + ", " +
-                                             num(ls[i][2]) + "), w (" + num(ws[i][0]) + ", " + num(ws[i][1]) + ", " +
-                                             num(ws[i][2]) + ")) should be (" + num(q[0] / sum) + ", " + num(q[1] / sum) +
-                                             ", " + num(q[2] / sum) + ")" +
-                                             (screen ? ": you returned the screen weights unchanged" : ""));
+                    c.add(fallback ? "bad input" : "perspective",
+                          "TODO 3: perspective_weights((" + num(ls[i][0]) + ", " + num(ls[i][1]) + ", " + num(ls[i][2]) +
+                              "), w (" + tiny(ws[i][0]) + ", " + num(ws[i][1]) + ", " + num(ws[i][2]) + ")) should be (" +
+                              num(want[0]) + ", " + num(want[1]) + ", " + num(want[2]) + ")" +
+                              (fallback ? ": here sum(l_i / w_i) = " + num(sum) +
+                                              " is not > 0 and finite (a w of 0, a 1 / w that overflows, or NaN), so the "
+                                              "screen weights come back unchanged, never NaN"
+                                        : screen ? ": you returned the screen weights unchanged" : ""));
                 }
             }
             break;

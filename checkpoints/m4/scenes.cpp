@@ -578,6 +578,11 @@ std::vector<KeyCase> key_cases() {
     cases.push_back({3, 0.5, -1});
     cases.push_back({0, std::numeric_limits<double>::quiet_NaN(), 1});
     cases.push_back({2, std::numeric_limits<double>::quiet_NaN(), 1});
+    // NaN in the other two formats, and a 1/w key of a w that is not finite: kClearKey.
+    cases.push_back({1, std::numeric_limits<double>::quiet_NaN(), 1});
+    cases.push_back({3, std::numeric_limits<double>::quiet_NaN(), 1});
+    cases.push_back({3, 0.5, std::numeric_limits<double>::infinity()});
+    cases.push_back({3, 0.5, std::numeric_limits<double>::quiet_NaN()});
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m4.depth_keys");
         for (int k = 0; k < 12; ++k) cases.push_back({k % 4, rng.uniform(-999, 999) / 1000.0, rng.uniform(1, 5000) / 100.0});

@@ -783,7 +783,8 @@ std::vector<Scene> build() {
         ball_m.texture = 3;
         Item ball = item(uv_sphere(32), ball_m);
         ball.position = {-1.0, 0.55, 0.5};
-        ball.size = {0.55, 0.55, 0.55};
+        // Squashed: its normals need milestone 4's normal matrix (the model matrix tilts them).
+        ball.size = {0.7, 0.55, 0.5};
         Panel pn = panel(cam({0.4, 2.6, 5}, {0.01, 0.3, 0.02}, 0.5, 50), {floor, box, ball}, textures, 0, 0, 192, 128);
         pn.lights = {sun({-0.6, -1, -0.45}, {0.75, 0.75, 0.7}, true), sun({0.7, -0.4, -0.2}, {0.2, 0.22, 0.3})};
         pn.shadows.resolution = 1024;
