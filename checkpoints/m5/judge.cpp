@@ -1339,6 +1339,10 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
                     "resolution^2 float-Z frame with light_view_projection, and the map keeps that matrix for the "
                     "lookup; fill_triangle multiplies each light's term by shadow_factor at the world position "
                     "interpolated with the perspective-correct weights"}},
+        {"m5.two_suns",
+         {"shadow", "TODOs 5 and 9: draw_scene makes one shadow map per light that casts shadows (none for the "
+                    "others), drawing only the objects that cast shadows into each, and fill_triangle looks each "
+                    "light up in that light's own map"}},
         {"m5.shadow_acne",
          {"shadow", "TODOs 5 and 9: fill_triangle passes the normalized normal and the world position to "
                     "shadow_factor, which applies the settings' biases; draw_scene's depth pass uses "

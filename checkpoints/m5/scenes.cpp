@@ -581,6 +581,29 @@ std::vector<Scene> build() {
         add(s);
     }
     {
+        Scene s = picture("m5.two_suns", "Two suns that cast shadows, one that casts none, and a box that casts none",
+                          "one shadow map per light that casts shadows (none for the others), each looked up by its own "
+                          "light; the depth passes draw only the objects that cast shadows",
+                          {8, 9}, 128, 96);
+        std::vector<Item> items = floor_and_box({0.3, 0.6, 0.1}, 0.6, 0.4);
+        Item hover = item(box_mesh(), plain({90, 160, 210}));
+        hover.position = {-1.1, 1.15, -0.5};
+        hover.size = {0.45, 0.45, 0.45};
+        hover.casts_shadow = false;  // lit like the rest, but the floor under it stays lit
+        items.push_back(hover);
+        Panel pn = panel(cam({0.3, 3.2, 5.5}, {0.01, 0.2, 0.02}, 0.5, 50), items, {}, 0, 0, 128, 96);
+        // The first light casts no shadow, so the second light's map is not the first map made
+        // if maps are numbered by light; the two casting suns throw two shadows of the box.
+        pn.lights = {sun({0.2, -1, 0.6}, {0.25, 0.25, 0.3}), sun({-0.6, -1, -0.3}, {0.5, 0.45, 0.4}, true),
+                     sun({0.8, -1, -0.2}, {0.35, 0.4, 0.5}, true)};
+        pn.shadows.resolution = 1024;
+        pn.shadows.center = {0, 0.5, 0};
+        pn.shadows.radius = 3.6;
+        pn.shadows.pcf = false;
+        s.panels.push_back(pn);
+        add(s);
+    }
+    {
         Scene s = picture("m5.shadow_acne", "A light 9 degrees above the floor: acne without bias, peter panning with too much",
                           "bias = constant + slope * min(tan(theta), 10) in world units, compared as d - bias / (2r) > "
                           "stored; the right panel's bias is too large on purpose (its shadow detaches)",
