@@ -646,9 +646,11 @@ void judge_filter(Ctx& c) {
             lo |= pyr.size() > 1 && (k.filter == Filter::kTrilinear || std::floor(lam + 0.5) >= 1);
         }
         const std::string key = "filter" + std::to_string(i);
-        const Vec3 mine = vec3(v, key), want = t_sample(pyr, k.uv, k.lambda, k.filter, Wrap::kRepeat, Wrap::kRepeat);
-        const std::string inputs = "sample(" + size_name(bases[std::size_t(k.base)]) + " texture, uv " + str(k.uv) + ", lambda " +
-                                   num(k.lambda) + ", " + filter_name(k.filter) + ")";
+        const Vec3 mine = vec3(v, key), want = t_sample(pyr, k.uv, k.lambda, k.filter, k.wrap_u, k.wrap_v);
+        const bool repeats = k.wrap_u == Wrap::kRepeat && k.wrap_v == Wrap::kRepeat;
+        const std::string inputs = "sample(" + size_name(bases[std::size_t(k.base)]) + " texture" +
+                                   (repeats ? std::string() : std::string(" (u ") + wrap_name(k.wrap_u) + ", v " + wrap_name(k.wrap_v) + ")") +
+                                   ", uv " + str(k.uv) + ", lambda " + num(k.lambda) + ", " + filter_name(k.filter) + ")";
         if (!same3(mine, want, 1e-9)) {
             std::string why, topic = "filter";
             const double top = double(pyr.size() - 1);
@@ -660,8 +662,12 @@ void judge_filter(Ctx& c) {
                 topic = "lambda clamp";
                 why = ": lambda is clamped to [0, L - 1] = [0, " + num(top) + "], so the last level (" +
                       size_name(pyr.back()) + ") is read";
+            } else if (!repeats && same3(mine, t_sample(pyr, k.uv, k.lambda, k.filter, Wrap::kRepeat, Wrap::kRepeat), 1e-9)) {
+                topic = "wrap";
+                why = ": that is the sample with repeat on both axes; every level is read with the texture's own wrap "
+                      "modes (here clamp to edge in u, mirrored repeat in v), not only level 0";
             } else if (k.filter == Filter::kTrilinear &&
-                       same3(mine, t_sample(pyr, k.uv, k.lambda, k.filter, Wrap::kRepeat, Wrap::kRepeat, false), 1e-9)) {
+                       same3(mine, t_sample(pyr, k.uv, k.lambda, k.filter, k.wrap_u, k.wrap_v, false), 1e-9)) {
                 topic = "trilinear";
                 why = ": that is level floor(lambda) alone; trilinear BLENDS the bilinear samples of levels floor(lambda) "
                       "and floor(lambda) + 1 by the fraction of lambda";

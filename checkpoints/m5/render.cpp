@@ -163,6 +163,8 @@ void numbers(Group g, Values& v) {
                     t.levels.push_back(to_level(bases[std::size_t(c.base)]));
                     builds = 0;
                 }
+                t.wrap_u = wrap(c.wrap_u);
+                t.wrap_v = wrap(c.wrap_v);
                 const std::string key = "filter" + std::to_string(i);
                 put(v, key, CALL("sample", m5::sample(t, c.uv, c.lambda, filter(c.filter), &builds)));
                 v[key + ".builds"] = double(builds);

@@ -1069,6 +1069,11 @@ std::vector<FilterCase> filter_cases() {
         for (double lambda : {-0.5, 0.6, 2.0}) cases.push_back({1, f, {0.25, 0.75}, lambda});
         for (double lambda : {0.4, 1.6, 9.0}) cases.push_back({3, f, {0.81, 0.5}, lambda});
     }
+    // The texture's wrap modes hold on every level: clamp to edge in u, mirrored repeat in v,
+    // outside [0, 1] and minified.
+    for (Filter f : {Filter::kNearestMip, Filter::kTrilinear}) {
+        for (double lambda : {0.8, 1.3, 2.2}) cases.push_back({0, f, {-0.3, 1.4}, lambda, Wrap::kClampToEdge, Wrap::kMirroredRepeat});
+    }
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m5.filters");
         for (int k = 0; k < 8; ++k) {

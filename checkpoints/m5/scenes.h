@@ -221,6 +221,7 @@ struct FilterCase {
     Filter filter;
     Vec2 uv;
     double lambda;
+    Wrap wrap_u = Wrap::kRepeat, wrap_v = Wrap::kRepeat;
 };
 // In call order: each (base, filter) pair gets a fresh texture, so the first case of a pair
 // that needs a level above 0 builds its pyramid.
