@@ -10,11 +10,10 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <limits>
-#include <sstream>
 #include <numbers>
 #include <optional>
 #include <set>
+#include <sstream>
 
 #include "harness/diagnosis.h"
 #include "harness/judging.h"
@@ -173,34 +172,31 @@ void judge_group(Group g, Ctx& c) {
             break;
         }
         case Group::kWeights: {
-            // The last three: a w of 0, one whose 1 / w overflows, a NaN: the screen weights.
-            constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-            const std::array<double, 3> ls[] = {{0.2, 0.3, 0.5}, {1, 0, 0},       {0.25, 0.25, 0.5}, {0.6, 0.3, 0.1},
-                                                {0.2, 0.3, 0.5}, {0.5, 0.5, 0}, {0.3, 0.3, 0.4}};
-            const std::array<double, 3> ws[] = {{1, 2, 4}, {3, 1, 1}, {2, 2, 2}, {0.01, 10, 100},
-                                                {0, 1, 1},   {1e-320, 1, 1}, {kNaN, 1, 1}};
-            for (int i = 0; i < 7; ++i) {
+            // num() shows numbers below 1e-12 as 0; a w of 1e-320 must read as what it is.
+            auto tiny = [](double x) {
+                std::ostringstream o;
+                o << x;
+                return x != 0 && std::abs(x) < 1e-12 ? o.str() : num(x);
+            };
+            const auto cases = weight_cases();
+            for (std::size_t i = 0; i < cases.size(); ++i) {
+                const auto& ls = cases[i].screen;
+                const auto& ws = cases[i].w;
                 double q[3], sum = 0;
-                for (int k = 0; k < 3; ++k) sum += q[k] = ls[i][k] / ws[i][k];
+                for (int k = 0; k < 3; ++k) sum += q[k] = ls[k] / ws[k];
                 const bool fallback = !(sum > 0) || !std::isfinite(sum);
-                // num() shows numbers below 1e-12 as 0; a w of 1e-320 must read as what it is.
-                auto tiny = [](double x) {
-                    std::ostringstream o;
-                    o << x;
-                    return x != 0 && std::abs(x) < 1e-12 ? o.str() : num(x);
-                };
                 double want[3];
-                for (int k = 0; k < 3; ++k) want[k] = fallback ? ls[i][k] : q[k] / sum;
+                for (int k = 0; k < 3; ++k) want[k] = fallback ? ls[k] : q[k] / sum;
                 bool ok = true, screen = true;
                 for (int k = 0; k < 3; ++k) {
                     const double mine = get(v, "w" + std::to_string(i) + "." + std::to_string(k));
                     ok &= close(mine, want[k], 1e-9);
-                    screen &= close(mine, ls[i][k], 1e-12);
+                    screen &= close(mine, ls[k], 1e-12);
                 }
                 if (!ok) {
                     c.add(fallback ? "bad input" : "perspective",
-                          "TODO 3: perspective_weights((" + num(ls[i][0]) + ", " + num(ls[i][1]) + ", " + num(ls[i][2]) +
-                              "), w (" + tiny(ws[i][0]) + ", " + num(ws[i][1]) + ", " + num(ws[i][2]) + ")) should be (" +
+                          "TODO 3: perspective_weights((" + num(ls[0]) + ", " + num(ls[1]) + ", " + num(ls[2]) +
+                              "), w (" + tiny(ws[0]) + ", " + num(ws[1]) + ", " + num(ws[2]) + ")) should be (" +
                               num(want[0]) + ", " + num(want[1]) + ", " + num(want[2]) + ")" +
                               (fallback ? ": here sum(l_i / w_i) = " + num(sum) +
                                               " is not > 0 and finite (a w of 0, a 1 / w that overflows, or NaN), so the "

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "depth_lighting.h"
 #include "m4/scenes.h"
@@ -108,14 +107,9 @@ void numbers(Group g, Values& v) {
             break;
         }
         case Group::kWeights: {
-            // The last three: a w of 0, one whose 1 / w overflows, a NaN: the screen weights.
-            constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-            const std::array<double, 3> ls[] = {{0.2, 0.3, 0.5}, {1, 0, 0},       {0.25, 0.25, 0.5}, {0.6, 0.3, 0.1},
-                                                {0.2, 0.3, 0.5}, {0.5, 0.5, 0}, {0.3, 0.3, 0.4}};
-            const std::array<double, 3> ws[] = {{1, 2, 4}, {3, 1, 1}, {2, 2, 2}, {0.01, 10, 100},
-                                                {0, 1, 1},   {1e-320, 1, 1}, {kNaN, 1, 1}};
-            for (int i = 0; i < 7; ++i) {
-                const auto p = CALL("perspective_weights", m4::perspective_weights(ls[i], ws[i]));
+            const auto cases = weight_cases();
+            for (std::size_t i = 0; i < cases.size(); ++i) {
+                const auto p = CALL("perspective_weights", m4::perspective_weights(cases[i].screen, cases[i].w));
                 for (int k = 0; k < 3; ++k) v["w" + std::to_string(i) + "." + std::to_string(k)] = p[k];
             }
             break;

@@ -619,6 +619,18 @@ std::vector<ClipCase> clip_cases() {
     return cases;
 }
 
+std::vector<WeightCase> weight_cases() {
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    return {{{0.2, 0.3, 0.5}, {1, 2, 4}},
+            {{1, 0, 0}, {3, 1, 1}},
+            {{0.25, 0.25, 0.5}, {2, 2, 2}},
+            {{0.6, 0.3, 0.1}, {0.01, 10, 100}},
+            // A w of 0, one whose 1 / w overflows, a NaN: the screen weights come back.
+            {{0.2, 0.3, 0.5}, {0, 1, 1}},
+            {{0.5, 0.5, 0}, {1e-320, 1, 1}},
+            {{0.3, 0.3, 0.4}, {kNaN, 1, 1}}};
+}
+
 std::vector<LambertCase> lambert_cases() {
     const Color base{200, 150, 100};
     constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -163,5 +163,10 @@ struct LambertCase {
     Vec3 position, normal;
 };
 std::vector<LambertCase> lambert_cases();
+// perspective_weights' inputs (m4.weights): screen weights and w per vertex.
+struct WeightCase {
+    std::array<double, 3> screen, w;
+};
+std::vector<WeightCase> weight_cases();
 
 }  // namespace m4cp

@@ -664,8 +664,9 @@ void judge_filter(Ctx& c) {
                       size_name(pyr.back()) + ") is read";
             } else if (!repeats && same3(mine, t_sample(pyr, k.uv, k.lambda, k.filter, Wrap::kRepeat, Wrap::kRepeat), 1e-9)) {
                 topic = "wrap";
-                why = ": that is the sample with repeat on both axes; every level is read with the texture's own wrap "
-                      "modes (here clamp to edge in u, mirrored repeat in v), not only level 0";
+                why = std::string(": that is the sample with repeat on both axes; every level is read with the texture's "
+                                  "own wrap modes (here ") + wrap_name(k.wrap_u) + " in u, " + wrap_name(k.wrap_v) +
+                      " in v), not only level 0";
             } else if (k.filter == Filter::kTrilinear &&
                        same3(mine, t_sample(pyr, k.uv, k.lambda, k.filter, k.wrap_u, k.wrap_v, false), 1e-9)) {
                 topic = "trilinear";
@@ -1660,13 +1661,11 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 why = ": one pyramid per texture, built the first time a mip filter reads a level above 0";
             } else if (name == "specular_terms" || name == "shadow_lookups") {
                 // Fewer than the reference's: where does a light arrive?
-                why = name == "specular_terms"
-                          ? ": one per light on each shaded fragment of a material with a specular color, where "
-                            "dot(N, L) > 0 with L = -normalize(direction), the way TOWARD the light (a light's direction "
-                            "is the way its rays travel)"
-                          : ": one per shadow-casting light on each shaded fragment, where dot(N, L) > 0 with L = "
-                            "-normalize(direction), the way TOWARD the light (a light's direction is the way its rays "
-                            "travel)";
+                why = std::string(name == "specular_terms"
+                                      ? ": one per light on each shaded fragment of a material with a specular color"
+                                      : ": one per shadow-casting light on each shaded fragment") +
+                      ", where dot(N, L) > 0 with L = -normalize(direction), the way TOWARD the light (a light's "
+                      "direction is the way its rays travel)";
             } else if (name == "triangles_drawn") {
                 why = ": one per fan triangle passed to fill_triangle, counted once (by draw_scene or inside fill_triangle, "
                       "not both)";
