@@ -46,6 +46,7 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"depth clear", {"TODO 2", "clear_frame gives every pixel kClearKey at the start of EVERY frame"}},
         {"tie rule", {"TODO 2", "an exact tie of keys goes to the brighter color (r, then g, then b)"}},
         {"perspective", {"TODO 3", "weights l_i / w_i, normalized to sum 1"}},
+        {"extreme w", {"TODO 3", "when sum(l_i / w_i) is not > 0 or not finite, return the screen weights unchanged"}},
         {"interpolation", {"TODO 8", "with perspective_correct false the weights are the screen weights l_i"}},
         {"normals", {"TODO 4", "normalize(cross(p1 - p0, p2 - p0)); vertex normals sum the unnormalized cross products"}},
         {"normal matrix", {"TODO 4", "normals go to world space by the inverse transpose of the model's 3x3, not the model matrix"}},

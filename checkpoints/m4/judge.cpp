@@ -194,7 +194,7 @@ void judge_group(Group g, Ctx& c) {
                     screen &= close(mine, ls[k], 1e-12);
                 }
                 if (!ok) {
-                    c.add(fallback ? "bad input" : "perspective",
+                    c.add(fallback ? "extreme w" : "perspective",
                           "TODO 3: perspective_weights((" + num(ls[0]) + ", " + num(ls[1]) + ", " + num(ls[2]) +
                               "), w (" + tiny(ws[0]) + ", " + num(ws[1]) + ", " + num(ws[2]) + ")) should be (" +
                               num(want[0]) + ", " + num(want[1]) + ", " + num(want[2]) + ")" +
@@ -300,7 +300,7 @@ void judge_group(Group g, Ctx& c) {
                               : ": the first light is in front of the surface, the second behind it: the second adds "
                                 "nothing and takes nothing away (max(0, N . L) per light)";
                 } else if (i == 11) {
-                    topic = "bad input";
+                    topic = "grazing light";
                     why = ": the infinite light runs exactly along the surface (N . L = 0), so it adds nothing; "
                           "infinity * 0 is NaN, so skip a light whose max(0, N . L) is 0 instead of multiplying";
                 }

@@ -1666,6 +1666,10 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                       : ": one per shadow-casting light on each shaded fragment") +
                       ", where dot(N, L) > 0 with L = -normalize(direction), the way TOWARD the light (a light's "
                       "direction is the way its rays travel)";
+                if (name == "shadow_lookups") {
+                    why += "; and each such light must find its own map: state.shadow_maps[k] for light k, nullptr only "
+                           "for a light that casts none";
+                }
             } else if (name == "triangles_drawn") {
                 why = ": one per fan triangle passed to fill_triangle, counted once (by draw_scene or inside fill_triangle, "
                       "not both)";
