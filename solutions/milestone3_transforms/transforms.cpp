@@ -435,8 +435,14 @@ bool clip_line(Vec4& a, Vec4& b) {
     }
     if (t0 > t1) return false;
     const Vec4 d = sb - sa;
-    if (t0 > 0) a = e != 0 ? scaled(sa + d * t0, e) : sa + d * t0;
-    if (t1 < 1) b = e != 0 ? scaled(sa + d * t1, e) : sa + d * t1;
+    // A point of the segment lies between its ends in every coordinate; rounding may step one
+    // unit past an end, which scaled back from the largest exponent would overflow.
+    auto between = [&](Vec4 p) {
+        auto in = [](double v, double x, double y) { return std::clamp(v, std::min(x, y), std::max(x, y)); };
+        return Vec4{in(p.x, sa.x, sb.x), in(p.y, sa.y, sb.y), in(p.z, sa.z, sb.z), in(p.w, sa.w, sb.w)};
+    };
+    if (t0 > 0) a = e != 0 ? scaled(between(sa + d * t0), e) : sa + d * t0;
+    if (t1 < 1) b = e != 0 ? scaled(between(sa + d * t1), e) : sa + d * t1;
     return true;
     // SKELETON: return false;
     // END SOLUTION
