@@ -336,9 +336,11 @@ M4 t_light(Vec3 direction, Vec3 center, double r, bool flip = false) {
 // x to 4 decimals, as a finding prints a worked number.
 double round4(double x) { return std::round(x * 1e4) / 1e4; }
 
-// The bias of a shadow case in world units: constant + slope * min(tan(theta), 10).
-double t_bias(const TinyMap& map, const ShadowCase& c, bool capped = true) {
-    const double cos_t = raster::dot(c.n, -unit_or_zero(map.direction));
+// The bias of a shadow case in world units: constant + slope * min(tan(theta), 10), with
+// c = cos(theta) from the light's direction normalized (or, for a finding, as the case passed it).
+double t_bias(const TinyMap& map, const ShadowCase& c, bool capped = true, bool normalized = true) {
+    const Vec3 direction = map.direction * c.direction_scale;
+    const double cos_t = raster::dot(c.n, normalized ? -unit_or_zero(direction) : -direction);
     const double tan_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t)) / cos_t;
     return c.constant_bias + c.slope_bias * (capped ? std::min(tan_t, 10.0) : tan_t);
 }
@@ -350,6 +352,8 @@ enum class Lookup {
     kBiasAdded,   // d + bias / (2r)
     kWorldBias,   // d - bias, the bias in world units not converted to depth
     kUncapped,    // tan(theta) not capped at 10
+    kOverR,       // d - bias / r: the bias converted to depth with half the box's depth
+    kRawDirection,  // c = dot(n, -direction) with the direction as passed, not normalized
     kUnflipped,   // the row from NDC y as it is, without to_screen's flip
 };
 
@@ -361,9 +365,10 @@ double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::k
     const double x = (clip.x / clip.w + 1) / 2 * res, z = clip.z / clip.w;
     const double y = mode == Lookup::kUnflipped ? (clip.y / clip.w + 1) / 2 * res : (1 - clip.y / clip.w) / 2 * res;
     const double d = (z + 1) / 2;
-    const double bias = t_bias(map, c, mode != Lookup::kUncapped);
+    const double bias = t_bias(map, c, mode != Lookup::kUncapped, mode != Lookup::kRawDirection);
     const double test = mode == Lookup::kBiasAdded   ? d + bias / (2 * map.radius)
                         : mode == Lookup::kWorldBias ? d - bias
+                        : mode == Lookup::kOverR     ? d - bias / map.radius
                                                      : d - bias / (2 * map.radius);
     auto lit = [&](double col, double row) {
         if (col < 0 || row < 0 || col >= res || row >= res) return 1.0;
@@ -959,6 +964,18 @@ void judge_shadow(Ctx& c) {
             why = ": the bias (here " + num(round4(bias)) + " world units) was subtracted from d as it is, not converted "
                   "to depth units: d runs from 0 to 1 over the light's box, 2r = " + num(2 * map.radius) + " world units "
                   "deep, so the test is d - bias / (2r) = d - " + num(round4(depth_bias)) + " > stored";
+        } else if (fits(Lookup::kOverR) && close(mine, t_shadow(map, k, Lookup::kOverR), 1e-9)) {
+            topic = "shadow bias";
+            why = ": the bias (here " + num(round4(bias)) + " world units) was divided by r = " + num(map.radius) +
+                  ", not 2r: d runs from 0 to 1 over the light's box, 2r = " + num(2 * map.radius) +
+                  " world units deep, so the test is d - bias / (2r) = d - " + num(round4(depth_bias)) +
+                  " > stored; with r the bias is twice too large";
+        } else if (fits(Lookup::kRawDirection) && close(mine, t_shadow(map, k, Lookup::kRawDirection), 1e-9)) {
+            topic = "shadow bias";
+            why = ": the light's direction was passed " + num(k.direction_scale) +
+                  " times as long as a unit vector, and c = dot(n, -direction) was taken from it as it is: normalize "
+                  "the direction first (c = " + num(round4(raster::dot(k.n, -unit_or_zero(map.direction)))) +
+                  " here, tan(theta) = " + num(round4((bias - k.constant_bias) / k.slope_bias)) + ")";
         } else if (fits(Lookup::kUncapped) && close(mine, t_shadow(map, k, Lookup::kUncapped), 1e-9)) {
             topic = "shadow bias";
             why = ": tan(theta) = " + num(round4((t_bias(map, k, false) - k.constant_bias) / k.slope_bias)) +
@@ -990,6 +1007,14 @@ void judge_shadow(Ctx& c) {
         } else if (i == 19) {
             why = ": the texel was never drawn (kClearKey), so the point is lit whatever its depth (here d = 1.125, beyond "
                   "the box's far side): kClearKey is not the depth 1";
+        } else if (i == 20) {
+            topic = "shadow bias";
+            why = ": the point is 0.03 below the floor, beyond the constant bias of 0.02 world units (0.02 / (2r) in "
+                  "depth, as the floor faces the light: tan(theta) = 0), so the floor's texel shadows it";
+        } else if (i == 21) {
+            topic = "shadow bias";
+            why = ": this is case 3 with the direction passed 3 times as long; c = dot(n, -normalize(direction)) = 0.2 "
+                  "still, so the slope term keeps it lit";
         } else if (k.pcf) {
             why = ": with PCF the factor is the lit fraction of the 3x3 texels around the one p falls in (a texel outside "
                   "the map, or never drawn, is lit)";
@@ -999,7 +1024,10 @@ void judge_shadow(Ctx& c) {
         }
         out.add(topic, "TODO 8: shadow_factor at p " + str(k.p) + " with n " + str(k.n) + " (constant bias " + num(k.constant_bias) +
                            ", slope bias " + num(k.slope_bias) + ", pcf " + (k.pcf ? "on" : "off") +
-                           ") on the 4x4 map of a light looking straight down at radius 2 gave " + num(mine) + ", expected " +
+                           ") on the 4x4 map of a light looking straight down at radius 2" +
+                           (k.direction_scale != 1 ? ", its direction passed as " + str(map.direction * k.direction_scale) + ","
+                                                   : std::string()) +
+                           " gave " + num(mine) + ", expected " +
                            num(want) + why);
     }
 }
@@ -1735,7 +1763,9 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                     which = ": " + of_them(state.missing) +
                             " should be in shadow and are lit, so shadows are missing: a caster left out of the "
                             "depth pass (it draws every object that casts a shadow, with both faces), a bias so "
-                            "large that shadows come off their casters (peter panning), or the comparison reversed";
+                            "large that shadows come off their casters (peter panning), the comparison reversed, "
+                            "or a highlight left unshadowed (the factor multiplies the light's whole term, diffuse "
+                            "and specular)";
                 } else if (3 * state.spurious >= 2 * state.wrong()) {
                     which = ": " + of_them(state.spurious) +
                             " are drawn in shadow where the light reaches them: spread over lit surfaces that is "

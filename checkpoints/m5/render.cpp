@@ -231,7 +231,7 @@ void numbers(Group g, Values& v) {
                 settings.constant_bias = c.constant_bias;
                 settings.slope_bias = c.slope_bias;
                 settings.pcf = c.pcf;
-                v["shadow" + std::to_string(i)] = CALL("shadow_factor", m5::shadow_factor(map, c.p, c.n, tiny.direction, settings));
+                v["shadow" + std::to_string(i)] = CALL("shadow_factor", m5::shadow_factor(map, c.p, c.n, tiny.direction * c.direction_scale, settings));
             }
             break;
         }

@@ -1217,6 +1217,9 @@ std::vector<ShadowCase> shadow_cases() {
         {{0.5, -0.05, -2.5}, up, 0.02, 0.02, true},   // PCF centered at column -1: column 0's 3 texels in the map, 6 of 9
         {{0.5, -0.05, -2.3}, up, 0.02, 0.02, false},  // x = -0.3: column floor(-0.3) = -1, outside: lit (truncating gives 0)
         {{1.5, -2.5, 1.5}, up, 0.02, 0.02, false},    // never drawn, the point beyond the box (d = 1.125): lit
+        {{1.5, -0.03, -1.5}, up, 0.02, 0.02, false},  // 0.03 below the floor, beyond the bias 0.02: shadowed
+        // Case 3 with the light's direction passed 3 times as long: c is taken from it normalized.
+        {{-1.5, -0.1, -1.5}, {s5, 0.2, 0}, 0.02, 0.02, false, 3},
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m5.shadow_lookup");

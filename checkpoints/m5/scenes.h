@@ -264,6 +264,7 @@ struct ShadowCase {
     Vec3 p, n;
     double constant_bias, slope_bias;
     bool pcf;
+    double direction_scale = 1;  // the light's direction is passed this many times as long
 };
 std::vector<ShadowCase> shadow_cases();
 
