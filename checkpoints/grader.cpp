@@ -557,12 +557,13 @@ int cmd_report(const std::vector<std::string>& args) {
                 // Only names the judge wrote, from its own folder.
                 const fs::path pf = mdir / "verdicts" / cname / (pic + ".png");
                 if (pic.find('/') != std::string::npos || !fs::is_regular_file(pf)) continue;
-                // Pictures a whole multiple of their size (so no pixel is dropped), the diff at least
-                // twice its size, charts as they are.
+                // Pictures a whole multiple of their size (so no pixel is dropped), at least 128 high,
+                // the diff at least twice its size, charts as they are.
                 const std::string png = read_text(pf);
                 const int natural = cp::png_width(png);
-                const int width = pic == "error_vs_time" ? (natural > 0 ? natural : 480)
-                                                         : cp::shown_width(natural, 192, pic == "diff" ? 2 : 1);
+                const int width = pic == "error_vs_time"
+                                      ? (natural > 0 ? natural : 480)
+                                      : cp::shown_width(natural, 192, pic == "diff" ? 2 : 1, cp::png_height(png), 128);
                 sections << "<figure style=\"width:" << width + 2 << "px\"><img alt=\"" << html_escape(pic)
                          << "\" width=\"" << width << "\" src=\"data:image/png;base64," << base64(png)
                          << "\"><figcaption>" << html_escape(cp::picture_caption(m, pic)) << "</figcaption></figure>";

@@ -23,22 +23,28 @@ inline std::string html_escape(const std::string& s) {
     return out;
 }
 
-// The width of a PNG from its first 24 bytes (the IHDR chunk), or 0 when they are not a PNG's.
-inline int png_width(const std::string& head) {
+// The width and height of a PNG from its first 24 bytes (the IHDR chunk), or 0 when they are
+// not a PNG's.
+inline int png_dimension(const std::string& head, int offset) {
     if (head.size() < 24 || head.compare(1, 3, "PNG") != 0) return 0;
-    int w = 0;
-    for (int i = 16; i < 20; ++i) w = w * 256 + static_cast<unsigned char>(head[static_cast<std::size_t>(i)]);
-    return w;
+    int v = 0;
+    for (int i = offset; i < offset + 4; ++i)
+        v = v * 256 + static_cast<unsigned char>(head[static_cast<std::size_t>(i)]);
+    return v;
 }
+inline int png_width(const std::string& head) { return png_dimension(head, 16); }
+inline int png_height(const std::string& head) { return png_dimension(head, 20); }
 
 // The width in CSS pixels to show a picture `natural` pixels wide: the whole multiple of it
 // (at least `min_times` of it, but no wider than 1024 unless it is itself) nearest to `about`,
-// so that nearest-neighbour scaling (image-rendering: pixelated) repeats every pixel the same
-// number of times and drops none: a single red pixel in a diff.png stays visible. `about` when
-// the width is unknown.
-inline int shown_width(int natural, int about, int min_times = 1) {
+// and large enough that a picture `natural_height` pixels high shows at least `min_height`
+// high (a wide strip of panels is enlarged too), so that nearest-neighbour scaling
+// (image-rendering: pixelated) repeats every pixel the same number of times and drops none: a
+// single red pixel in a diff.png stays visible. `about` when the width is unknown.
+inline int shown_width(int natural, int about, int min_times = 1, int natural_height = 0, int min_height = 0) {
     if (natural <= 0) return about;
-    const int times = std::max(min_times, (about + natural / 2) / natural);
+    int times = std::max(min_times, (about + natural / 2) / natural);
+    if (natural_height > 0) times = std::max(times, (min_height + natural_height - 1) / natural_height);
     return natural * std::max(1, std::min(times, 1024 / natural));
 }
 

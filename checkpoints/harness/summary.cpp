@@ -41,12 +41,12 @@ std::string measure_text(double v) {
 
 using cp::html_escape;
 
-// The width of the PNG at `path`, 0 when it cannot be read.
-int png_width_of(const std::filesystem::path& path) {
+// The first 24 bytes of the PNG at `path` (its width and height), empty when it cannot be read.
+std::string png_head_of(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::string head(24, '\0');
     in.read(head.data(), static_cast<std::streamsize>(head.size()));
-    return in ? cp::png_width(head) : 0;
+    return in ? head : std::string();
 }
 
 nlohmann::json json_number(double v) {
@@ -154,11 +154,14 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         for (const std::string& name : names) {
             const std::filesystem::path p = std::filesystem::path(r.output_dir) / (name + ".png");
             if (!std::filesystem::exists(p)) continue;
-            // Scene pictures about 320 px wide, each a whole multiple of its own size, the diff at
-            // least twice its size (so a single pixel of it shows); charts as they are.
-            const int natural = png_width_of(p);
-            const int width = name == "error_vs_time" ? (natural > 0 ? natural : 640)
-                                                      : cp::shown_width(natural, 320, name == "diff" ? 2 : 1);
+            // Scene pictures about 320 px wide and at least 192 high, each a whole multiple of its
+            // own size, the diff at least twice its size (so a single pixel of it shows); charts as
+            // they are.
+            const std::string head = png_head_of(p);
+            const int natural = cp::png_width(head);
+            const int width = name == "error_vs_time"
+                                  ? (natural > 0 ? natural : 640)
+                                  : cp::shown_width(natural, 320, name == "diff" ? 2 : 1, cp::png_height(head), 192);
             const std::string src = html_escape(page_relative(p, page_dir));
             html << "<figure style=\"width:" << width + 2 << "px\"><a href=\"" << src << "\"><img alt=\""
                  << html_escape(r.id + " " + name) << "\" width=\"" << width << "\" src=\"" << src
@@ -307,15 +310,23 @@ int main(int argc, char** argv) {
     // anti-aliasing, the coverage error against the exact area for each sample count. The
     // pipeline's counts beside the reference's ("... (reference N)") are in the HTML report
     // and in a failing checkpoint's findings; here they would bury the errors.
+    // Each checkpoint once, with its render times, and its measures beneath it: a measure's
+    // unit is in its name (pixels, ms of one panel), so no line mixes two units.
     bool any_measure = false;
     for (const cp::Record& r : records) {
+        std::size_t width = 0;
+        for (const auto& m : r.measures)
+            if (m.first.find("(reference ") == std::string::npos) width = std::max(width, m.first.size());
+        if (width == 0) continue;
+        if (!any_measure) std::cout << "measured error against run time:\n";
+        any_measure = true;
+        std::cout << "  " << r.id << " (the whole checkpoint rendered in " << std::fixed << std::setprecision(3)
+                  << r.student_ms << " ms, the reference in " << r.reference_ms << " ms)\n";
+        std::cout.unsetf(std::ios::floatfield);
         for (const auto& [name, v] : r.measures) {
             if (name.find("(reference ") != std::string::npos) continue;
-            if (!any_measure) std::cout << "measured error against run time:\n";
-            any_measure = true;
-            std::cout << "  " << std::left << std::setw(26) << r.id << std::right << name << " " << measure_text(v)
-                      << "   your " << std::setprecision(3) << r.student_ms << " ms, reference " << r.reference_ms
-                      << " ms\n";
+            std::cout << "    " << std::left << std::setw(static_cast<int>(width)) << name << std::right << "  "
+                      << measure_text(v) << "\n";
         }
     }
     if (any_measure) std::cout << std::string(100, '-') << "\n";
