@@ -14,6 +14,7 @@
 #include "raster_catch.h"
 
 #include "harness/checkpoint.h"
+#include "harness/html.h"
 #include "raster/io.h"
 
 namespace fs = std::filesystem;
@@ -117,4 +118,19 @@ TEST_CASE("garbage lines in values.txt are ignored, not trusted", "[intake]") {
     const cp::Artifacts a = cp::read_artifacts(f.dir.string(), rules_48());
     CHECK(a.trace.at("x").calls == 0);
     CHECK(a.stopped);
+}
+
+// Not the intake, but the same harness: the width a report shows a picture at (cp::shown_width)
+// is a whole multiple of its own, so pixelated scaling drops no pixel of a diff.
+TEST_CASE("report pictures are shown at whole multiples, at least the minimum height", "[pages]") {
+    CHECK(cp::shown_width(96, 320) == 288);                 // 3 times, nearest 320
+    CHECK(cp::shown_width(384, 320, 1, 96, 192) == 768);    // a strip of panels: 192 high
+    CHECK(cp::shown_width(192, 320, 2) == 384);             // a diff at least twice
+    CHECK(cp::shown_width(1024, 320, 1, 48, 192) == 1024);  // never wider than 1024 unless itself
+    CHECK(cp::shown_width(600, 320, 1, 10, 192) == 600);
+    CHECK(cp::shown_width(0, 320) == 320);                  // width unknown
+    std::string head = png_of(48, 32).substr(0, 24);
+    CHECK(cp::png_width(head) == 48);
+    CHECK(cp::png_height(head) == 32);
+    CHECK(cp::png_height("GIF89a") == 0);
 }
