@@ -1231,6 +1231,58 @@ double share_off(const raster::Image& img, const Panel& p, const Truth& t) {
     return n ? 100.0 * double(off) / double(n) : 0;
 }
 
+// The pixels that differ from the expected image beyond the tolerance (strictly), and how many of
+// them a ray finds on an item whose normal map does not repeat, at uv outside [0, 1] on an axis
+// that does not repeat: there the map's own wrap modes decide the texel. `modes` names the wrap
+// modes of the first such map ("u clamp to edge, v mirrored repeat"), `where` its panel.
+struct NormalWrapDiff {
+    long long strict = 0, outside = 0;
+    std::string modes, where;
+};
+NormalWrapDiff normal_map_wrap_diff(const Scene& s, const raster::Image& mine, const raster::Image& expected,
+                                    const cp::Tolerance& tol) {
+    NormalWrapDiff out;
+    if (mine.width() != expected.width() || mine.height() != expected.height()) return out;
+    auto map_of = [](const Panel& p, int item) -> const TextureSpec* {
+        if (item < 0 || std::size_t(item) >= p.items.size()) return nullptr;
+        const MaterialSpec& m = p.items[std::size_t(item)].material;
+        if (!m.lit || m.normal_map < 0 || std::size_t(m.normal_map) >= p.textures.size()) return nullptr;
+        const TextureSpec& t = p.textures[std::size_t(m.normal_map)];
+        return t.wrap_u == Wrap::kRepeat && t.wrap_v == Wrap::kRepeat ? nullptr : &t;
+    };
+    for (std::size_t pi = 0; pi < s.panels.size(); ++pi) {
+        const Panel& p = s.panels[pi];
+        bool any = false;
+        for (std::size_t i = 0; i < p.items.size(); ++i) any |= map_of(p, int(i)) != nullptr;
+        const auto tris = any ? world_triangles(p, false) : std::vector<WorldTri>{};
+        const Basis b = basis(p.camera);
+        for (int y = 0; y < p.h; ++y) {
+            for (int x = 0; x < p.w; ++x) {
+                const int gx = p.x0 + x, gy = p.y0 + y;
+                if (!expected.in_bounds(gx, gy) || tol.lenient.get(gx, gy) ||
+                    max_diff(mine.at(gx, gy), expected.at(gx, gy)) <= tol.strict_channel_diff) {
+                    continue;
+                }
+                ++out.strict;
+                if (!any) continue;
+                const Hit h = cast(tris, p.camera.eye, ray(p, b, x + 0.5, y + 0.5), 0);
+                const TextureSpec* map = h.tri ? map_of(p, h.tri->item) : nullptr;
+                if (!map) continue;
+                const Vec2 uv = uv_at(h);
+                if ((map->wrap_u != Wrap::kRepeat && (uv.x < 0 || uv.x > 1)) ||
+                    (map->wrap_v != Wrap::kRepeat && (uv.y < 0 || uv.y > 1))) {
+                    ++out.outside;
+                    if (out.modes.empty()) {
+                        out.modes = std::string("u ") + wrap_name(map->wrap_u) + ", v " + wrap_name(map->wrap_v);
+                        out.where = s.panels.size() > 1 ? " of panel " + std::to_string(pi + 1) : "";
+                    }
+                }
+            }
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
 // Pixels in the wrong light state: per pixel center the nearest surface by ray casting, lit or
@@ -1366,7 +1418,7 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
         {"m5.normal_map",
          {"normal map", "TODOs 5 and 9: draw_scene computes each mesh triangle's tangent_frame from its WORLD positions "
                         "and uv; fill_triangle perturbs the normalized normal with the normal map's bilinear level-0 "
-                        "texel"}},
+                        "texel, read with the normal map's own wrap modes (wrap_u, wrap_v)"}},
         {"m5.degenerate_uv",
          {"normal map", "TODOs 5 and 9: a triangle whose tangent frame is not valid keeps its normal"}},
         {"m5.shadow_box",
@@ -1841,6 +1893,19 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
 
     if (differs) {
         // The difference comes from the callers, fill_triangle (TODO 5) or draw_scene (TODO 9).
+        // Nearly all of it where a normal map that does not repeat is read at uv outside [0, 1]:
+        // the map was read with other wrap modes than its own (repeat).
+        const NormalWrapDiff nw = normal_map_wrap_diff(s, *mine, expected, tolerance_for(expected));
+        if (nw.outside >= 20 && 10 * nw.outside >= 9 * nw.strict) {
+            c.add("normal map", "TODO 5: " + std::to_string(nw.outside) + " of the " + std::to_string(nw.strict) +
+                                    " pixels that differ beyond the tolerance lie on the normal-mapped surface" + nw.where +
+                                    " at uv outside [0, 1], where its normal map does not repeat (" + nw.modes +
+                                    "): there the normal map's own wrap modes decide which texel is read (read with "
+                                    "repeat, bumps rise where clamp to edge stretches the flat edge texels, and mirrored "
+                                    "repeat runs them backwards)");
+            c.j.findings.back().hint = "fill_triangle reads the normal map with sample_bilinear on level 0 and the map's own "
+                                       "wrap modes: sample_bilinear(level 0, uv, normal_map->wrap_u, normal_map->wrap_v)";
+        }
         {
             std::vector<std::string> passing;
             for (Group g : prerequisite_groups(s)) passing.push_back(prerequisite_checkpoint(g));

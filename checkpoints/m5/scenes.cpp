@@ -495,13 +495,14 @@ std::vector<Scene> build() {
     }
     {
         Scene s = picture("m5.normal_map",
-                          "A normal-mapped quad, its uv sheared (left) and square but turned (middle), and a coarse prism "
-                          "with smooth normals (right)",
+                          "Normal-mapped: a quad with sheared uv, one square but turned, a coarse prism with smooth "
+                          "normals, and a quad whose map clamps u and mirrors v (left to right)",
                           "T and B from the WORLD positions and uv; T' = T made orthogonal to N, B' = cross(N, T') (not "
                           "B itself: with sheared uv it is not perpendicular to T); the texel as 2 t / 255 - 1; N "
                           "normalized before perturb_normal (inside a triangle of the prism the interpolated normal is "
-                          "shorter than 1)",
-                          {7, 6, 5, 9}, 384, 96);
+                          "shorter than 1); the map read with its own wrap modes (on the right, uv outside [0, 1]: "
+                          "clamp to edge in u stretches the flat edge texels, mirrored repeat in v reads it backwards)",
+                          {7, 6, 5, 9}, 512, 96);
         for (int p = 0; p < 2; ++p) {
             Mesh q = quad({-1.7, -1.2, 0}, {1.7, -1.2, 0}, {1.7, 1.2, 0}, {-1.7, 1.2, 0});
             // uv at the corners: v grows down the quad; the sheared one slides u by 0.9 per v.
@@ -533,6 +534,18 @@ std::vector<Scene> build() {
         Panel pn = panel(cam({0.02, 0.03, 4.2}), {prism}, {bumps}, 256, 0, 128, 96);
         pn.lights = {sun({-0.6, -0.5, -0.8}, {0.8, 0.8, 0.8})};
         s.panels.push_back(pn);
+        // The normal map has wrap modes of its own: clamp to edge in u, mirrored repeat in v, and
+        // the quad's uv run past [0, 1] on every side. Left and right of the middle third, clamp
+        // stretches the map's flat edge texels (no bump reaches the edge), so the expected surface
+        // is smooth there; read with repeat, steep bumps appear, lit by a light raking along u.
+        Mesh wq = quad({-1.7, -1.2, 0}, {1.7, -1.2, 0}, {1.7, 1.2, 0}, {-1.7, 1.2, 0});
+        wq.uvs = {{-1, 1.5}, {2, 1.5}, {2, -0.5}, {-1, -0.5}};
+        MaterialSpec wm = plain({200, 180, 160}, {140, 140, 140}, 24);
+        wm.normal_map = 0;
+        Panel pw = panel(cam({0.02, 0.03, 4.2}), {item(wq, wm)},
+                         {tex(Pattern::kBumps, 32, 32, 2, Wrap::kClampToEdge, Wrap::kMirroredRepeat)}, 384, 0, 128, 96);
+        pw.lights = {sun({-0.9, -0.25, -0.45}, {0.8, 0.8, 0.8})};
+        s.panels.push_back(pw);
         s.demo = true;
         add(s);
     }
