@@ -62,6 +62,7 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"per-pixel normals", {"TODO 8", "normalize the interpolated normal before lighting: it is shorter than 1 between vertices"}},
         {"flat shading", {"TODO 9", "one light value per triangle: face normal of the world positions, at the centroid"}},
         {"gouraud", {"TODO 9", "light every vertex once, interpolate the lit colors"}},
+        {"face color", {"TODO 9", "a triangle without a face color (past the end of face_colors) is white"}},
         {"needs", {"TODO 9", "allocate, compute and interpolate only what Needs asks for"}},
         {"pipeline", {"TODO 9", "follow draw_mesh's steps in depth_lighting.h and count each as Stats says"}},
         {"bad input", {"TODO 9", "skip triangles with a non-finite clip coordinate or an index out of range"}},

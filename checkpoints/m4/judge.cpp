@@ -545,7 +545,8 @@ const char* picture_topic(const std::string& id) {
         {"m4.zfight_formats", "depth format"},      {"m4.coplanar", "tie rule"},
         {"m4.degenerate_normals", "zero normal"},   {"m4.near_eye", "clipping"},
         {"m4.extreme_input", "bad input"},          {"m4.needs", "needs"},
-        {"m4.fill_triangle", "rasterizer"},
+        {"m4.fill_triangle", "rasterizer"},         {"m4.flat_clipped", "flat shading"},
+        {"m4.missing_face_colors", "face color"},
     };
     const auto it = topics.find(id);
     return it == topics.end() ? "pipeline" : it->second;
@@ -578,6 +579,10 @@ std::pair<std::string, std::string> caller_of(const std::string& theme, Shade sh
     }
     if (theme == "perspective") {
         return {"rasterizer", "TODO 8: fill_triangle weighs the attributes with perspective_weights"};
+    }
+    if (theme == "face color") {
+        return {"face color", "TODO 9: draw_mesh colors a kFaceColor triangle with face_colors[face], and a triangle "
+                              "past the end of that list (or of an empty one) white"};
     }
     if (theme == "depth clear") return {"pipeline", "TODO 9: every frame starts with clear_frame"};
     if (theme == "normal matrix") {

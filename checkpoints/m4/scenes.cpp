@@ -374,6 +374,41 @@ std::vector<Scene> build() {
         add(s);
     }
     {
+        Scene s = picture("m4.flat_clipped", "A flat-shaded floor cut by the view volume, under a low point light",
+                          "a clipped triangle is still ONE face: lit once, at the centroid of its three world "
+                          "positions, whatever fan its polygon is cut into",
+                          {9, 5, 4, 7}, 192, 96);
+        // Left: two big triangles, each cut by the near plane and the sides into a polygon of
+        // several fan triangles. A point light just above the floor gives every point of it
+        // another light value, so lighting each fan triangle at its own centroid paints every
+        // fan triangle in its own color. Right: the same floor as nine tiles, all clipped but
+        // the far middle one.
+        for (int p = 0; p < 2; ++p) {
+            Panel pn = panel(cam({0.02, 0.7, 3}, {0.01, -0.6, -1.5}), {}, 96 * p, 0, 96, 96, Shade::kFlat);
+            Mesh floor;
+            const int n = p == 0 ? 1 : 3;
+            const double x0 = -5, x1 = 5, z0 = 5, z1 = -7;
+            for (int i = 0; i <= n; ++i) {
+                for (int k = 0; k <= n; ++k) floor.positions.push_back({x0 + (x1 - x0) * k / n, -1, z0 + (z1 - z0) * i / n});
+            }
+            for (int i = 0; i < n; ++i) {
+                for (int k = 0; k < n; ++k) {
+                    // a, b along this row (x growing), d, c along the next (toward -z): facing up
+                    const int a = i * (n + 1) + k, b = a + 1, c = a + n + 2, d = a + n + 1;
+                    floor.triangles.push_back({a, b, c});
+                    floor.triangles.push_back({a, c, d});
+                }
+            }
+            Item it = item(floor);
+            it.material = {220, 200, 170};
+            pn.items.push_back(it);
+            pn.ambient = {0.08, 0.08, 0.08};
+            pn.lights = {point({0.4, -0.4, 0.3}, {1.1, 1.0, 0.9})};
+            s.panels.push_back(pn);
+        }
+        add(s);
+    }
+    {
         Scene s = picture("m4.normal_view", "Normals as colors", "round(255 * (n + 1) / 2) of the world-space normal",
                           {6, 4, 9}, 96, 96);
         Item ball = item(sphere_mesh(16, false));
@@ -493,6 +528,27 @@ std::vector<Scene> build() {
         add(s);
     }
 
+    {
+        Scene s = picture("m4.missing_face_colors", "Fewer face colors than triangles: the rest are white",
+                          "a triangle without a face color (past the end of face_colors, or none at all) is drawn "
+                          "white",
+                          {9, 8}, 96, 96);
+        // A hexagon of six triangles with three face colors, and a quad with none.
+        Mesh hexagon;
+        hexagon.positions.push_back({-0.5, 0.2, 0});
+        for (int k = 0; k < 6; ++k) {
+            const double a = std::numbers::pi * (0.1 + k / 3.0);
+            hexagon.positions.push_back({-0.5 + 1.3 * std::cos(a), 0.2 + 1.3 * std::sin(a), 0});
+        }
+        for (int k = 0; k < 6; ++k) hexagon.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
+        hexagon.face_colors = {kRed, kGreen, kBlue};
+        Mesh quad = quad_mesh({0.6, -1.6, -0.5}, {1.7, -1.5, -0.5}, {1.6, -0.4, -0.5}, {0.5, -0.5, -0.5}, kRed);
+        quad.face_colors.clear();
+        Panel pn = panel(cam({0.02, 0.03, 4.5}), {item(hexagon), item(quad)}, 0, 0, 96, 96, Shade::kFaceColor);
+        s.panels.push_back(pn);
+        add(s);
+    }
+
     // ---- only what a scene needs ----
     {
         Scene s = picture("m4.needs", "One sphere, four sets of needs: what each stage costs",
@@ -530,7 +586,7 @@ Scene vary(const Scene& pub, Rng& rng) {
     if (is({"m4.occlusion_order", "m4.interpenetrating", "m4.depth_view", "m4.clear_between_frames", "m4.flat_sphere",
             "m4.gouraud_sphere", "m4.per_pixel_sphere", "m4.nonuniform_scale", "m4.normal_view", "m4.needs",
             "m4.overflow", "m4.perspective_checker", "m4.screen_space_checker", "m4.light_behind",
-            "m4.coplanar"})) {
+            "m4.coplanar", "m4.flat_clipped", "m4.missing_face_colors"})) {
         const Vec3 d{rng.uniform(-12, 12) / 100.0, rng.uniform(-12, 12) / 100.0, rng.uniform(-12, 12) / 100.0};
         for (Panel& p : s.panels) p.camera.eye = p.camera.eye + d;
     }
