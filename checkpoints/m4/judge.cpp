@@ -122,6 +122,10 @@ void judge_group(Group g, Ctx& c) {
                           (std::isnan(k.z_ndc) ? ": NaN must give kClearKey"
                            : k.format == 3 && (!(k.w > 0) || !std::isfinite(k.w))
                                ? ": the 1/w key needs a w > 0 and finite; any other w gives kClearKey"
+                           : k.format != 3 && (k.z_ndc < -1 || k.z_ndc > 1)
+                               ? ": z_ndc is outside [-1, 1] here, so d = (z_ndc + 1) / 2 (or (1 - z_ndc) / 2 for "
+                                 "reversed-Z) is clamped to [0, 1] first: a fragment a rounding error outside the "
+                                 "view volume gets the key of the near or the far plane"
                                : "") +
                           truncated);
             }
@@ -178,6 +182,8 @@ void judge_group(Group g, Ctx& c) {
                 o << x;
                 return x != 0 && std::abs(x) < 1e-12 ? o.str() : num(x);
             };
+            // A NaN's sign is the platform's business: every NaN reads "NaN".
+            auto given = [&tiny](double x) { return std::isnan(x) ? std::string("NaN") : tiny(x); };
             const auto cases = weight_cases();
             for (std::size_t i = 0; i < cases.size(); ++i) {
                 const auto& ls = cases[i].screen;
@@ -188,15 +194,17 @@ void judge_group(Group g, Ctx& c) {
                 double want[3];
                 for (int k = 0; k < 3; ++k) want[k] = fallback ? ls[k] : q[k] / sum;
                 bool ok = true, screen = true;
+                double mine[3];
                 for (int k = 0; k < 3; ++k) {
-                    const double mine = get(v, "w" + std::to_string(i) + "." + std::to_string(k));
-                    ok &= close(mine, want[k], 1e-9);
-                    screen &= close(mine, ls[k], 1e-12);
+                    mine[k] = get(v, "w" + std::to_string(i) + "." + std::to_string(k));
+                    ok &= close(mine[k], want[k], 1e-9);
+                    screen &= close(mine[k], ls[k], 1e-12);
                 }
                 if (!ok) {
                     c.add(fallback ? "extreme w" : "perspective",
                           "TODO 3: perspective_weights((" + num(ls[0]) + ", " + num(ls[1]) + ", " + num(ls[2]) +
-                              "), w (" + tiny(ws[0]) + ", " + num(ws[1]) + ", " + num(ws[2]) + ")) should be (" +
+                              "), w (" + tiny(ws[0]) + ", " + num(ws[1]) + ", " + num(ws[2]) + ")) gave (" +
+                              given(mine[0]) + ", " + given(mine[1]) + ", " + given(mine[2]) + "), expected (" +
                               num(want[0]) + ", " + num(want[1]) + ", " + num(want[2]) + ")" +
                               (fallback ? ": here sum(l_i / w_i) = " + num(sum) +
                                               " is not > 0 and finite (a w of 0, a 1 / w that overflows, or NaN), so the "
@@ -566,8 +574,9 @@ std::pair<std::string, std::string> caller_of(const std::string& theme, Shade sh
                                "normal, and fill_triangle interpolates the lit colors"};
         }
         return {"per-pixel normals", "TODOs 8 and 9: draw_mesh gives each vertex its world position (model * "
-                                     "position) and world normal; fill_triangle interpolates both, normalizes the "
-                                     "normal, then calls shade() and to_color() for every fragment"};
+                                     "position) and world normal; fill_triangle interpolates both with the "
+                                     "perspective-correct weights, as every attribute, normalizes the normal, then "
+                                     "calls shade() and to_color() for every fragment"};
     };
     if (theme == "depth test" || theme == "tie rule" || theme == "depth format") {
         return {"rasterizer", "TODO 8: fill_triangle keys every fragment with depth_key and lets depth_passes decide, "
@@ -823,16 +832,17 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         // triangles and positions, fill_triangle (8) counts fragments; shade() is called by
         // draw_mesh per position or face (Gouraud, flat) and by fill_triangle per fragment.
         const bool per_pixel_shading = panel.shading == Shade::kPerPixel;
-        const char* kStats[][4] = {
-            {"triangles_clipped", "clipping", "triangles sent to clip_triangle", "TODO 9"},
-            {"triangles_culled", "pipeline", "fan triangles culled", "TODO 9"},
-            {"triangles_drawn", "pipeline", "fan triangles drawn", "TODO 9"},
-            {"fragments", "rasterizer", "fragments (covered pixel centers)", "TODO 8"},
-            {"depth_tests", "needs", "depth tests", "TODO 8"},
-            {"depth_writes", "depth test", "depth writes", "TODO 8"},
-            {"vertex_normals", "needs", "vertex normals computed", "TODO 9"},
-            {"shade_calls", "needs", "calls of shade()", per_pixel_shading ? "TODO 8" : "TODO 9"},
-            {"interpolated", "needs", "attribute values interpolated", "TODO 8"},
+        // The count, its concept, what it counts (many, then one) and its TODO.
+        const char* kStats[][5] = {
+            {"triangles_clipped", "clipping", "triangles sent to clip_triangle", "triangle sent to clip_triangle", "TODO 9"},
+            {"triangles_culled", "pipeline", "triangles culled", "triangle culled", "TODO 9"},
+            {"triangles_drawn", "pipeline", "fan triangles drawn", "fan triangle drawn", "TODO 9"},
+            {"fragments", "rasterizer", "fragments (covered pixel centers)", "fragment (covered pixel center)", "TODO 8"},
+            {"depth_tests", "needs", "depth tests", "depth test", "TODO 8"},
+            {"depth_writes", "depth test", "depth writes", "depth write", "TODO 8"},
+            {"vertex_normals", "needs", "vertex normals computed", "vertex normal computed", "TODO 9"},
+            {"shade_calls", "needs", "calls of shade()", "call of shade()", per_pixel_shading ? "TODO 8" : "TODO 9"},
+            {"interpolated", "needs", "attribute values interpolated", "attribute value interpolated", "TODO 8"},
         };
         const bool clipped = get(c.ref, key + ".stats.triangles_clipped") > 0;
         // Keys read back from the depth buffer at known pixels, against the reference's. A
@@ -890,7 +900,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                       "the depth test wrote its key; test first, and write color and key only when it passes";
             }
             const bool needless = b == 0 && !(name == "triangles_culled" && panel.cull);
-            c.add(needless ? "needs" : st[1], std::string(st[3]) + ": " + num(a) + " " + st[2] + where + ", expected " +
+            const char* counted = a == 1 ? st[3] : st[2];
+            c.add(needless ? "needs" : st[1], std::string(st[4]) + ": " + num(a) + " " + counted + where + ", expected " +
                                                 (per_triangle ? num(b) : "about " + num(b)) + why);
         }
         for (std::size_t k = 0; k < panel.depth_probes.size(); ++k) {
