@@ -250,7 +250,8 @@ Frame t_frame(const FrameCase& c) {
 
 // mode 0: the rule; 1: the texel read as t / 255 (no 2 t - 1); 2: T and B used without
 // making them orthonormal (each only normalized); 3: B' = cross(n, T') never negated to agree
-// with B; 4: B' = B made orthogonal to n alone (not to T').
+// with B; 4: B' = B made orthogonal to n alone (not to T'); 5: the green channel read as -B'
+// (green up the image).
 Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
     const Vec3 n = c.n;
     if (!c.valid || n == Vec3{} || !raster::is_finite(n) || !raster::is_finite(c.texel) || !raster::is_finite(c.tangent) ||
@@ -264,7 +265,7 @@ Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
     if (mode == 2) bp = unit_or_zero(c.bitangent);
     if (mode == 4) bp = unit_or_zero(c.bitangent - n * raster::dot(n, c.bitangent));  // against n, not T'
     const Vec3 m = mode == 1 ? c.texel / 255 : c.texel * 2.0 / 255 - Vec3{1, 1, 1};
-    const Vec3 r = unit_or_zero(tp * m.x + bp * m.y + n * m.z);
+    const Vec3 r = unit_or_zero(tp * m.x + bp * (mode == 5 ? -m.y : m.y) + n * m.z);
     return r == Vec3{} ? n : r;
 }
 
@@ -838,6 +839,12 @@ void judge_tangent(Ctx& c) {
     }
     const auto cases = perturb_cases();
     Limited out{c, "perturb_normal", 0, 0, "normal map", "7"};
+    // Green read as -B' explains every case (where B' had to be negated it looks like a B' left
+    // unnegated, so only all cases together tell the two apart).
+    bool green_flipped = true;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        green_flipped &= same3(vec3(v, "perturb" + std::to_string(i)), t_perturb(cases[i], 5), 1e-9);
+    }
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const auto& k = cases[i];
         const Vec3 mine = vec3(v, "perturb" + std::to_string(i)), want = t_perturb(k);
@@ -855,6 +862,10 @@ void judge_tangent(Ctx& c) {
         } else if (raw_frame) {
             why = ": T and B were used as they are; make the frame orthonormal: T' = normalize(T - n dot(n, T)), "
                   "B' = cross(n, T') (negated when it points away from B)";
+        } else if (green_flipped) {
+            why = ": the texel's green channel tilted the normal along -B' (green up the image, as OpenGL's normal "
+                  "maps have it); here green runs along +B', the way v grows, DOWN the image: m.y multiplies B' as it "
+                  "is";
         } else if (same3(mine, t_perturb(k, 3), 1e-9)) {
             why = ": B' = cross(n, T') points away from B here (dot(B', B) < 0) and was not negated: B' must agree with "
                   "B, if (dot(B', B) < 0) B' = -B', or a texel's y (green) tilts the normal the wrong way along v";
