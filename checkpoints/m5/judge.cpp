@@ -337,15 +337,6 @@ M4 t_light(Vec3 direction, Vec3 center, double r, bool flip = false) {
 // x to 4 decimals, as a finding prints a worked number.
 double round4(double x) { return std::round(x * 1e4) / 1e4; }
 
-// The bias of a shadow case in world units: constant + slope * min(tan(theta), 10), with
-// c = cos(theta) from the light's direction normalized (or, for a finding, as the case passed it).
-double t_bias(const TinyMap& map, const ShadowCase& c, bool capped = true, bool normalized = true) {
-    const Vec3 direction = map.direction * c.direction_scale;
-    const double cos_t = raster::dot(c.n, normalized ? -unit_or_zero(direction) : -direction);
-    const double tan_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t)) / cos_t;
-    return c.constant_bias + c.slope_bias * (capped ? std::min(tan_t, 10.0) : tan_t);
-}
-
 // The rule, and the mistakes the findings name.
 enum class Lookup {
     kRule,
@@ -358,6 +349,17 @@ enum class Lookup {
     kUnflipped,   // the row from NDC y as it is, without to_screen's flip
 };
 
+// The bias of a shadow case in world units: constant + slope * min(tan(theta), 10), with
+// c = cos(theta) from the light's direction normalized; or as `mode`'s mistake takes it.
+double t_bias(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::kRule) {
+    const Vec3 direction = map.direction * c.direction_scale;
+    const double cos_t =
+        raster::dot(c.n, mode == Lookup::kRawDirection ? -direction : -unit_or_zero(direction));
+    const double tan_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t)) / cos_t;
+    return c.constant_bias + c.slope_bias * (mode == Lookup::kUncapped ? tan_t : std::min(tan_t, 10.0));
+}
+
+
 // The shadow factor on the tiny map.
 double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::kRule) {
     const M4 m = t_light(map.direction, map.center, map.radius);
@@ -366,7 +368,7 @@ double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::k
     const double x = (clip.x / clip.w + 1) / 2 * res, z = clip.z / clip.w;
     const double y = mode == Lookup::kUnflipped ? (clip.y / clip.w + 1) / 2 * res : (1 - clip.y / clip.w) / 2 * res;
     const double d = (z + 1) / 2;
-    const double bias = t_bias(map, c, mode != Lookup::kUncapped, mode != Lookup::kRawDirection);
+    const double bias = t_bias(map, c, mode);
     const double test = mode == Lookup::kBiasAdded   ? d + bias / (2 * map.radius)
                         : mode == Lookup::kWorldBias ? d - bias
                         : mode == Lookup::kOverR     ? d - bias / map.radius
@@ -989,7 +991,7 @@ void judge_shadow(Ctx& c) {
                   " here, tan(theta) = " + num(round4((bias - k.constant_bias) / k.slope_bias)) + ")";
         } else if (fits(Lookup::kUncapped) && close(mine, t_shadow(map, k, Lookup::kUncapped), 1e-9)) {
             topic = "shadow bias";
-            why = ": tan(theta) = " + num(round4((t_bias(map, k, false) - k.constant_bias) / k.slope_bias)) +
+            why = ": tan(theta) = " + num(round4((t_bias(map, k, Lookup::kUncapped) - k.constant_bias) / k.slope_bias)) +
                   " here was not capped: bias = constant + slope * min(tan(theta), 10) = " + num(round4(bias)) + " world units";
         } else if (fits(Lookup::kUnflipped) && close(mine, t_shadow(map, k, Lookup::kUnflipped), 1e-9)) {
             why = ": the map is read upside down: the texel's row is floor(y) of m3::to_screen, which flips NDC y "
