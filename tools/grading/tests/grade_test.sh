@@ -455,11 +455,13 @@ PY
       --only m1.octant_1,m1.octant_3,m1.clip_one_edge,m2.top_left,m3.matrix_ops "$work/sub" >"$work/log" 2>&1 ||
       { cat "$work/log"; fail "grading failed"; }
     page=$work/out/report.html
-    dom=$("$browser" --headless --no-sandbox --disable-gpu --virtual-time-budget=5000 --dump-dom "file://$page" 2>/dev/null)
+    dom=$("$browser" --headless --no-sandbox --disable-gpu --virtual-time-budget=5000 --dump-dom "file://$page" \
+      2>"$work/chromium.log") || echo "chromium --dump-dom exited with status $?"
+    [ -n "$dom" ] || { { grep -v ":dbus/" "$work/chromium.log" || true; } | tail -n 20; fail "Chromium dumped no page"; }
     "$browser" --headless --no-sandbox --disable-gpu --window-size=1200,2000 --screenshot="$build/grading/report_example.png" \
       "file://$page" >/dev/null 2>&1 || true
-    sections=$(grep -o '<section id="[^"]*"' <<<"$dom" | wc -l)
-    actuals=$(grep -o '<img alt="actual"' <<<"$dom" | wc -l)
+    sections=$({ grep -o '<section id="[^"]*"' <<<"$dom" || true; } | wc -l)
+    actuals=$({ grep -o '<img alt="actual"' <<<"$dom" || true; } | wc -l)
     broken=$(grep -o 'data-broken="[0-9]*"' <<<"$dom" | grep -o '[0-9]*' || true)
     [ "$sections" = 5 ] || fail "$sections sections for 5 checkpoints"
     [ "$actuals" = 4 ] || fail "$actuals of the 4 picture checkpoints' sections show the student's picture"
@@ -469,7 +471,7 @@ PY
     grep -q 'class="numbers-only">Numbers only' <<<"$numbers" || fail "m3.matrix_ops has no numbers-only note"
     if grep -q '<img' <<<"$numbers"; then fail "m3.matrix_ops, a checkpoint of numbers, shows a picture"; fi
     if grep -q 'image error' <<<"$numbers"; then fail "m3.matrix_ops, a checkpoint of numbers, reports an image error"; fi
-    [ "$(grep -o 'class="numbers-only"' <<<"$dom" | wc -l)" = 1 ] || fail "a numbers-only note on a picture checkpoint"
+    [ "$({ grep -o 'class="numbers-only"' <<<"$dom" || true; } | wc -l)" = 1 ] || fail "a numbers-only note on a picture checkpoint"
     [ "${broken:-x}" = 0 ] || fail "pictures did not load (data-broken=${broken:-missing})"
     grep -q 'octant' <<<"$dom" || fail "the failing checkpoint's findings are not on the page"
     ;;
