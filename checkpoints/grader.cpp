@@ -184,31 +184,6 @@ int cmd_ids(const std::string& m) {
     return 0;
 }
 
-// What of the student's artifacts the trusted side can check (tools/grading/README.md, "What the
-// render reports about itself"): the pictures and the answers, not the counts that only the
-// render process itself measures. Those (writes outside the image, the runaway flag, milestones
-// 4 and 5's stage counts, the pyramid builds milestone 5's sample() counts through its pointer,
-// milestone 4's buffer capacities) are replaced by the reference's; a checkpoint that
-// fails only on them passes in grading, and what they said is shown as advice, for no points.
-cp::Artifacts verifiable_part(const cp::Artifacts& student, const cp::Artifacts& reference) {
-    cp::Artifacts a = student;
-    a.stray_writes = reference.stray_writes;
-    for (auto& [name, t] : a.trace) {
-        const auto it = reference.trace.find(name);
-        t.stray_writes = it == reference.trace.end() ? 0 : it->second.stray_writes;
-    }
-    a.stopped_call.stray_writes = 0;
-    a.values.erase(cp::kRunawayKey);
-    for (auto& [key, value] : a.values) {
-        const bool counted = key.find(".stats.") != std::string::npos || key.find("capacity") != std::string::npos ||
-                             key.ends_with(".builds");  // milestone 5's sample() counts its own pyramid builds
-        if (!counted) continue;
-        const auto it = reference.values.find(key);
-        if (it != reference.values.end()) value = it->second;
-    }
-    return a;
-}
-
 int cmd_judge(const std::vector<std::string>& args) {
     if (args.size() < 5) throw std::invalid_argument("judge needs <m> <scene-id> <seed> <artifacts-dir> <out-dir>");
     const std::string m = args[0], id = args[1];
@@ -250,7 +225,7 @@ int cmd_judge(const std::vector<std::string>& args) {
     // Graded: the verdict on what the trusted side can check; what only the counts said is advice.
     std::vector<std::string> advice;
     if (early.empty() && v.record.status != "pass") {
-        cp::Verdict trusted = cp::judge_checkpoint(s, id, verifiable_part(student, reference), reference, expected);
+        cp::Verdict trusted = cp::judge_checkpoint(s, id, cp::verifiable_part(student, reference), reference, expected);
         for (const std::string& f : v.record.findings) {
             const auto& kept = trusted.record.findings;
             if (std::find(kept.begin(), kept.end(), f) == kept.end()) advice.push_back(f);

@@ -68,6 +68,15 @@ struct Artifacts {
 inline constexpr long long kStrayWriteBudget = 1'000'000;
 inline constexpr const char* kRunawayKey = "runaway";
 
+// What a checkpoint that fails only on the counts of the student's own program says (console,
+// summary and report): why `make check` fails it though its pictures are right, and what a
+// grader does with it.
+inline constexpr const char* kCountsOnlyNote =
+    "your pictures and answers are right; what fails is numbers your own code counted (how much "
+    "work each stage did, memory kept, writes outside the image). They are the lesson's rules, so "
+    "make check fails the checkpoint; a grader cannot trust numbers a program reports about "
+    "itself, so there these findings are advice and cost no points.";
+
 // Every difference picture of the project (make check's diff.png, the HTML reports, the lessons'
 // troubleshooting galleries) uses these colors, and this legend is printed beside each one.
 inline constexpr raster::Color kDiffWrong{255, 40, 40};     // differs where it must not

@@ -55,6 +55,7 @@ void write_record(const Record& r) {
     if (!r.hint.empty()) out << "hint\t" << r.hint << "\n";
     if (!r.diagnosis.empty()) out << "diagnosis\t" << r.diagnosis << "\n";
     if (!r.todos.empty()) out << "todos\t" << r.todos << "\n";
+    if (r.counts_only) out << "counts_only\t1\n";
     if (r.tolerated > 0) out << "tolerated\t" << r.tolerated << "\ntolerated_why\t" << r.tolerated_why << "\n";
 }
 
@@ -88,6 +89,7 @@ std::vector<Record> read_records(const std::string& dir) {
             else if (key == "hint") r.hint = v;
             else if (key == "diagnosis") r.diagnosis = v;
             else if (key == "todos") r.todos = v;
+            else if (key == "counts_only") r.counts_only = v == "1";
             else if (key == "tolerated") r.tolerated = std::stoll(v);
             else if (key == "tolerated_why") r.tolerated_why = v;
         }

@@ -28,6 +28,10 @@ struct Record {
     std::string tolerated_why;  // how many of which kind, and why that is fair
     std::string diagnosis;  // "your picture matches what happens ..." (see diagnosis.h), or empty
     std::string todos;  // the TODOs the scene needs, e.g. "1-4, 6" (see cp::needed_todos)
+    // A failing checkpoint whose pictures and answers are right: only numbers the student's own
+    // program counted (stage counts, buffer capacities, writes outside the image) made it fail.
+    // `make check` fails it; a grader shows those findings as advice (see verifiable_part).
+    bool counts_only = false;
 };
 
 void write_record(const Record& r);  // into $RASTER_RESULTS_DIR (default: checkpoint_results)

@@ -122,6 +122,7 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         }
         if (!r.hint.empty()) html << "<p><b>hint:</b> " << html_escape(r.hint) << "</p>\n";
         if (!r.diagnosis.empty()) html << "<p><b>known bug:</b> " << html_escape(r.diagnosis) << "</p>\n";
+        if (r.counts_only) html << "<p><b>counts only:</b> " << html_escape(cp::kCountsOnlyNote) << "</p>\n";
         if (r.tolerated > 0) html << "<p><b>tolerated:</b> " << html_escape(r.tolerated_why) << "</p>\n";
         if (r.output_dir.empty()) {
             html << "<p>No pictures: the checkpoint crashed or ran out of time. Run it alone to see why.</p>\n";
@@ -278,7 +279,8 @@ int main(int argc, char** argv) {
                       << std::setw(11) << "-";
         }
         std::cout << "  "
-                  << (r.status == "crashed" ? "crashed or timed out (see below)" : r.concepts)
+                  << (r.status == "crashed" ? "crashed or timed out (see below)"
+                                            : (r.counts_only ? "counts only: " : "") + r.concepts)
                   << "\n";
         nlohmann::json measures = nlohmann::json::object();
         for (const auto& [name, v] : r.measures) measures[name] = json_number(v);
@@ -296,6 +298,7 @@ int main(int argc, char** argv) {
                                {"hint", r.hint},
                                {"diagnosis", r.diagnosis},
                                {"todos", r.todos},
+                               {"counts_only", r.counts_only},
                                {"pictures", r.output_dir}});
     }
     std::ofstream(json_path) << nlohmann::json{{"checkpoints", checkpoints},
@@ -306,6 +309,9 @@ int main(int argc, char** argv) {
                              << "\n";
 
     std::cout << std::string(100, '-') << "\n";
+    if (std::any_of(records.begin(), records.end(), [](const cp::Record& r) { return r.counts_only; })) {
+        std::cout << "counts only: " << cp::kCountsOnlyNote << "\n" << std::string(100, '-') << "\n";
+    }
     // Numbers some checkpoints measure beside their verdict, against the render time: for
     // anti-aliasing, the coverage error against the exact area for each sample count. The
     // pipeline's counts beside the reference's ("... (reference N)") are in the HTML report

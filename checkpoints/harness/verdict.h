@@ -46,8 +46,18 @@ struct Expected {
 };
 Expected expected_image(const Suite& suite, const std::string& id, std::uint64_t seed, const Artifacts& reference);
 
+// A failing verdict whose findings all come from numbers only the render process counts about
+// itself has record.counts_only set (the judge runs again on verifiable_part to know).
 Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifacts& student,
                          const Artifacts& reference, const Expected& expected);
+
+// What of the student's artifacts the trusted side can check (tools/grading/README.md, "What the
+// render reports about itself"): the pictures and the answers, not the numbers that only the
+// render process itself measures. Those (writes outside the image, the runaway flag, milestones
+// 4 and 5's stage counts, the pyramid builds milestone 5's sample() counts through its pointer,
+// milestone 4's buffer capacities) are replaced by the reference's. The grader grades this part;
+// what only the whole artifacts' verdict said is advice there, for no points.
+Artifacts verifiable_part(const Artifacts& student, const Artifacts& reference);
 
 // A checkpoint's record before any verdict: id, milestone, title, order, the TODOs the scene
 // needs (from the reference's trace), status "crashed".
