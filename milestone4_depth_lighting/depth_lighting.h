@@ -305,7 +305,7 @@ struct Mesh {
 //    lights every position once here (material as base);
 // 2. per triangle in list order (skipping any with an index out of range or a non-finite clip
 //    coordinate): clip_triangle unless all three vertices are inside; kFlat lights the
-//    triangle once, when its first fan triangle is drawn; fan (0, i, i + 1); each fan
+//    triangle once, when the first of its fan triangles that survives culling is drawn; fan (0, i, i + 1); each fan
 //    triangle to the screen (m3::to_screen), culled if needs.cull and back-facing, else
 //    fill_triangle. The fan is the reference's choice: any triangulation of the convex
 //    polygon into n - 2 triangles of its own vertices (a fan from another vertex, a strip) is

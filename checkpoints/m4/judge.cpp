@@ -133,12 +133,18 @@ void judge_group(Group g, Ctx& c) {
         }
         case Group::kDepthTest: {
             const bool want[] = {true, false, true, false, false, false, true, true, true, true, false};
+            // The colors are the render half's: (10, 200, 30) against (11, 0, 0) and so on.
             const char* what[] = {"key 5 against stored 6 (nearer)", "key 6 against stored 5 (farther)",
-                                  "a tie, the new color brighter in red", "a tie, the new color darker in red",
-                                  "a tie with the very same color", "kClearKey against kClearKey",
+                                  "a tie, the new color (11, 0, 0) against the stored (10, 200, 30): brighter in red",
+                                  "a tie, the new color (10, 200, 30) against the stored (11, 0, 0): darker in red",
+                                  "a tie with the very same color (10, 200, 30)", "kClearKey against kClearKey",
                                   "key 0 against a cleared pixel", "kClearKey - 1 against a cleared pixel",
-                                  "a tie, equal red, brighter green", "a tie, equal red and green, brighter blue",
-                                  "a tie, equal red, darker green"};
+                                  "a tie, the new color (10, 201, 0) against the stored (10, 200, 30): equal red, "
+                                  "brighter green",
+                                  "a tie, the new color (10, 200, 31) against the stored (10, 200, 30): equal red and "
+                                  "green, brighter blue",
+                                  "a tie, the new color (10, 199, 255) against the stored (10, 200, 30): equal red, "
+                                  "darker green"};
             const bool reversed = get(v, "pass0") == 0 && get(v, "pass1") == 1;
             for (int i = 0; i < 11; ++i) {
                 const double mine = get(v, "pass" + std::to_string(i));
@@ -146,7 +152,12 @@ void judge_group(Group g, Ctx& c) {
                 const bool tie = i >= 2 && i != 6 && i != 7;
                 c.add(reversed || !tie ? "depth test" : "tie rule",
                       std::string("TODO 2: depth_passes on ") + what[i] + " returned " + (mine != 0 ? "true" : "false") +
-                          (reversed ? ": the comparison is reversed (a SMALLER key is nearer)" : ""));
+                          (reversed ? ": the comparison is reversed (a SMALLER key is nearer)"
+                           : i == 5 ? " (a fragment whose key is kClearKey never passes)"
+                           : i == 4 ? " (on a tie only a BRIGHTER color passes, and a color is not brighter than itself)"
+                           : tie    ? " (on a tie the brighter color wins: larger r; equal r, larger g; equal r and g, "
+                                      "larger b; not the sum of the channels)"
+                                    : ""));
             }
             break;
         }
@@ -895,6 +906,18 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                        panel.depth_test) {
                 why = ": are hidden fragments interpolated too? Test the depth first; only a fragment that "
                       "passes (or ties) needs its attributes";
+            } else if (name == "shade_calls" && panel.shading == Shade::kGouraud) {
+                why = a < b ? ": Gouraud lights every position of the mesh once, in step 1 of draw_mesh, before any "
+                              "triangle is clipped or culled, including positions no drawn triangle uses (lighting "
+                              "only the positions a drawn triangle needs gives the same picture, but this count is "
+                              "the rule's)"
+                            : ": Gouraud lights each position once in step 1, not once per triangle corner or per "
+                              "fragment; the triangles then interpolate the lit levels";
+            } else if (name == "shade_calls" && panel.shading == Shade::kFlat) {
+                why = a > b ? ": a flat face is lit once, when the first of its fan triangles is drawn: after "
+                              "clipping and culling, so a culled or clipped-away face is never lit, and the other fan "
+                              "triangles of a clipped face reuse its color"
+                            : ": every face with a drawn fan triangle is lit once, when the first of them is drawn";
             } else if (name == "depth_writes" && a > b && overwritten) {
                 why = ": the depth probes below hold keys farther than the reference's, so a fragment that failed "
                       "the depth test wrote its key; test first, and write color and key only when it passes";
