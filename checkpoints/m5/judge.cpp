@@ -449,6 +449,11 @@ void judge_sampling(Ctx& c) {
         const std::string inputs = "uv " + str(k.uv) + " on a " + std::to_string(l.width) + "x" + std::to_string(l.height) +
                                    " level, u " + wrap_name(k.wu) + ", v " + wrap_name(k.wv);
         const bool bad_uv = !std::isfinite(k.uv.x * l.width) || !std::isfinite(k.uv.y * l.height);
+        const bool huge_uv = !bad_uv && std::max(std::abs(k.uv.x * l.width), std::abs(k.uv.y * l.height)) > 1e15;
+        const std::string huge_why =
+            ": a huge uv wraps exactly: keep floor(u * w) a double and wrap it with std::fmod (wrap_index); a cast to "
+            "an integer type overflows, which is undefined (on x86 it gives -2^63, the right texel of a power-of-two "
+            "level only by luck)";
         {
             const Vec3 mine = vec3(v, "nearest" + std::to_string(i)), want = t_nearest(l, k.uv, k.wu, k.wv);
             if (!same3(mine, want, 1e-12)) {
@@ -456,6 +461,8 @@ void judge_sampling(Ctx& c) {
                 if (bad_uv) {
                     topic = "non-finite uv";
                     why = ": a NaN or infinite uv (or a u * w that overflows) samples black";
+                } else if (huge_uv) {
+                    why = huge_why;
                 } else if (same3(mine, t_fetch(l, std::round(k.uv.x * l.width), std::round(k.uv.y * l.height), k.wu, k.wv), 1e-12)) {
                     topic = "texel centers";
                     why = ": that is texel (round(u * w), round(v * h)); texel i COVERS [i, i + 1) in texel units, so "
@@ -470,6 +477,8 @@ void judge_sampling(Ctx& c) {
         if (bad_uv) {
             topic = "non-finite uv";
             why = ": a NaN or infinite uv (or a u * w that overflows) samples black";
+        } else if (huge_uv) {
+            why = huge_why;
         } else if (same3(mine, t_bilinear(l, k.uv, k.wu, k.wv, 0), 1e-9)) {
             topic = "texel centers";
             why = ": that is the blend with texel centers at INTEGERS; they are at half-integers, so take x' = u * w - "
@@ -1747,6 +1756,13 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
 
                 if (name == "shadow_passes" || name == "shadow_texels") why += " (a depth pass only for a light that casts shadows)";
                 if (name == "shadow_lookups" || name == "specular_terms") why += " (none where dot(N, L) <= 0)";
+                if (name == "tangent_frames") {
+                    why += " (one per mesh triangle of a normal-mapped material, made before clipping: the fan "
+                           "triangles of a clipped triangle share it)";
+                }
+            } else if (name == "tangent_frames") {
+                why = ": one per mesh triangle of a normal-mapped material, made before clipping, whether or not "
+                      "clipping leaves anything of it";
             } else if (name == "shaded" && a > b) {
                 why = ": a fragment whose key is greater than the stored key is dropped before anything else (not "
                       "shaded)";

@@ -977,6 +977,10 @@ std::vector<SampleCase> sample_cases() {
         {1, {0.13, 0.91}, R, R},
         {1, {-0.77, 0.2}, M, C},
         {1, {0.95, 0.05}, C, R},
+        // Huge on a level 5 wide and 3 high: an index cast to a 64-bit integer overflows (undefined;
+        // x86 gives -2^63), which lands on the right texel of a power-of-two level by luck only.
+        {1, {1e300, 0.5}, R, R},
+        {1, {0.3, -1e300}, C, M},
         {2, {0.5, 0.5}, R, R},           // no texels: black
     };
     if (variant_seed() != 0) {
