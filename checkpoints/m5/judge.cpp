@@ -454,6 +454,13 @@ void judge_sampling(Ctx& c) {
             ": a huge uv wraps exactly: keep floor(u * w) a double and wrap it with std::fmod (wrap_index); a cast to "
             "an integer type overflows, which is undefined (on x86 it gives -2^63, the right texel of a power-of-two "
             "level only by luck)";
+        // uv reduced to [0, 1) before sampling: repeat's answer whatever the modes (the texels near
+        // the border still wrap by the modes, so this differs from a repeat-only sampler).
+        const Vec2 fract_uv{k.uv.x - std::floor(k.uv.x), k.uv.y - std::floor(k.uv.y)};
+        const bool outside = !bad_uv && (k.uv.x < 0 || k.uv.x >= 1 || k.uv.y < 0 || k.uv.y >= 1);
+        const std::string fract_why =
+            ": that is the sample at uv reduced to [0, 1) first (its fraction); clamp to edge and mirrored repeat need "
+            "the whole uv: wrap the texel INDICES with wrap_index, not uv";
         {
             const Vec3 mine = vec3(v, "nearest" + std::to_string(i)), want = t_nearest(l, k.uv, k.wu, k.wv);
             if (!same3(mine, want, 1e-12)) {
@@ -461,6 +468,8 @@ void judge_sampling(Ctx& c) {
                 if (bad_uv) {
                     topic = "non-finite uv";
                     why = ": a NaN or infinite uv (or a u * w that overflows) samples black";
+                } else if (outside && same3(mine, t_nearest(l, fract_uv, k.wu, k.wv), 1e-12)) {
+                    why = fract_why;
                 } else if (huge_uv) {
                     why = huge_why;
                 } else if (same3(mine, t_fetch(l, std::round(k.uv.x * l.width), std::round(k.uv.y * l.height), k.wu, k.wv), 1e-12)) {
@@ -477,6 +486,8 @@ void judge_sampling(Ctx& c) {
         if (bad_uv) {
             topic = "non-finite uv";
             why = ": a NaN or infinite uv (or a u * w that overflows) samples black";
+        } else if (outside && same3(mine, t_bilinear(l, fract_uv, k.wu, k.wv), 1e-9)) {
+            why = fract_why;
         } else if (huge_uv) {
             why = huge_why;
         } else if (same3(mine, t_bilinear(l, k.uv, k.wu, k.wv, 0), 1e-9)) {
