@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <set>
@@ -565,7 +566,7 @@ const char* picture_topic(const std::string& id) {
         {"m4.degenerate_normals", "zero normal"},   {"m4.near_eye", "clipping"},
         {"m4.extreme_input", "bad input"},          {"m4.needs", "needs"},
         {"m4.fill_triangle", "rasterizer"},         {"m4.flat_clipped", "flat shading"},
-        {"m4.missing_face_colors", "face color"},
+        {"m4.missing_face_colors", "face color"},   {"m4.shared_edges", "fill rule"},
     };
     const auto it = topics.find(id);
     return it == topics.end() ? "pipeline" : it->second;
@@ -597,6 +598,10 @@ std::pair<std::string, std::string> caller_of(const std::string& theme, Shade sh
         return {"rasterizer", "TODO 8: fill_triangle colors each fragment with depth_gray or normal_color of the "
                               "interpolated value"};
     }
+    if (theme == "fill rule") {
+        return {"fill rule", "TODO 8: fill_triangle covers a pixel center on an edge by milestone 2's top-left rule, "
+                             "so each center on an edge shared by two triangles is drawn once"};
+    }
     if (theme == "perspective") {
         return {"rasterizer", "TODO 8: fill_triangle weighs the attributes with perspective_weights"};
     }
@@ -607,7 +612,8 @@ std::pair<std::string, std::string> caller_of(const std::string& theme, Shade sh
     if (theme == "depth clear") return {"pipeline", "TODO 9: every frame starts with clear_frame"};
     if (theme == "normal matrix") {
         return {"pipeline", "TODO 9: normal_matrix passes, so its caller is wrong: draw_mesh sends every normal "
-                            "through normal_matrix(model), never through the model matrix itself"};
+                            "through normal_matrix(model), never through the model matrix itself, and normalizes "
+                            "what comes out"};
     }
     if (theme == "clipping" && clipping_differs) {
         return {"pipeline", "TODO 9: draw_mesh clips in clip space with clip_triangle, fans the polygon it returns and "
@@ -730,28 +736,253 @@ void judge_screen_weights(Ctx& c, const raster::Image& mine, const cp::Artifacts
     }
 }
 
+// The w of a 1/w key (kReversedBase - the bits of float(1 / w)); NaN when it is none.
+double inverse_w_of(double key) {
+    if (!(key >= 0 && key <= 2139095040.0)) return std::nan("");
+    const float inv = std::bit_cast<float>(static_cast<std::uint32_t>(0x7F800000u - static_cast<std::uint32_t>(key)));
+    return inv > 0 ? 1 / double(inv) : std::nan("");
+}
+
+// The w (distance along the view direction) of every triangle of a perspective panel's items
+// that the ray through the center of pixel (x, y) meets: the candidates for the pixel's w.
+std::vector<double> surface_ws(const Panel& p, int x, int y) {
+    std::vector<double> out;
+    if (p.camera.ortho) return out;
+    const Basis b = basis(p.camera);
+    const Vec3 d = ray(p, b, x, y);  // its component along the view direction is 1
+    for (const Item& it : p.items) {
+        // model = translate(position) * rotate(axis, angle) * scale(size), Rodrigues' rotation.
+        const Vec3 k = unit_or_zero(it.axis);
+        const double cs = std::cos(it.angle), sn = std::sin(it.angle);
+        auto world = [&](Vec3 v) {
+            v = {v.x * it.size.x, v.y * it.size.y, v.z * it.size.z};
+            v = v * cs + raster::cross(k, v) * sn + k * (raster::dot(k, v) * (1 - cs));
+            return v + it.position;
+        };
+        for (const auto& t : it.mesh.triangles) {
+            const int n = static_cast<int>(it.mesh.positions.size());
+            if (t[0] < 0 || t[0] >= n || t[1] < 0 || t[1] >= n || t[2] < 0 || t[2] >= n) continue;
+            const Vec3 a = world(it.mesh.positions[std::size_t(t[0])]), e1 = world(it.mesh.positions[std::size_t(t[1])]) - a,
+                       e2 = world(it.mesh.positions[std::size_t(t[2])]) - a;
+            const Vec3 pv = raster::cross(d, e2);
+            const double det = raster::dot(e1, pv);
+            if (det == 0 || !std::isfinite(det)) continue;
+            const Vec3 tv = p.camera.eye - a;
+            const double u = raster::dot(tv, pv) / det;
+            const Vec3 qv = raster::cross(tv, e1);
+            const double v = raster::dot(d, qv) / det, t_hit = raster::dot(e2, qv) / det;
+            if (u >= -1e-9 && v >= -1e-9 && u + v <= 1 + 1e-9 && t_hit > 0) out.push_back(t_hit);
+        }
+    }
+    return out;
+}
+
+// A normal view of normals given per position (m4.nonuniform_scale's right panel), worked out
+// by ray casting: at the hit, the world-space barycentric weights ARE the perspective-correct
+// weights. The header's way normalizes each normal after the normal matrix (R * S^-1 for
+// model R * S) and then interpolates; the mistake interpolates them at the lengths the matrix
+// gives. Where the two colors differ clearly, more pixels like the second name it.
+void judge_normal_lengths(Ctx& c, const raster::Image& mine, const Panel& p, const std::string& where) {
+    if (p.camera.ortho || p.shading != Shade::kNormalView) return;
+    const Basis b = basis(p.camera);
+    auto color_of = [](Vec3 n) {
+        const Vec3 u = unit_or_zero(n);
+        return Color{raster::to_channel(127.5 * (u.x + 1)), raster::to_channel(127.5 * (u.y + 1)),
+                     raster::to_channel(127.5 * (u.z + 1))};
+    };
+    auto near = [](Color a, Color e, int tol) {
+        return std::abs(a.r - e.r) <= tol && std::abs(a.g - e.g) <= tol && std::abs(a.b - e.b) <= tol;
+    };
+    long long telling = 0, unnormalized_like = 0, normalized_like = 0;
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            const Vec3 d = ray(p, b, x, y);
+            double best = std::numeric_limits<double>::infinity();
+            Vec3 good{}, bad{};
+            for (const Item& it : p.items) {
+                if (it.mesh.normals.size() != it.mesh.positions.size()) continue;
+                const Vec3 k = unit_or_zero(it.axis);
+                const double cs = std::cos(it.angle), sn = std::sin(it.angle);
+                auto turn = [&](Vec3 v) { return v * cs + raster::cross(k, v) * sn + k * (raster::dot(k, v) * (1 - cs)); };
+                auto world = [&](Vec3 v) { return turn({v.x * it.size.x, v.y * it.size.y, v.z * it.size.z}) + it.position; };
+                auto normal = [&](Vec3 n) { return turn({n.x / it.size.x, n.y / it.size.y, n.z / it.size.z}); };
+                const int n = static_cast<int>(it.mesh.positions.size());
+                for (const auto& t : it.mesh.triangles) {
+                    if (t[0] < 0 || t[0] >= n || t[1] < 0 || t[1] >= n || t[2] < 0 || t[2] >= n) continue;
+                    const Vec3 a = world(it.mesh.positions[std::size_t(t[0])]);
+                    const Vec3 e1 = world(it.mesh.positions[std::size_t(t[1])]) - a, e2 = world(it.mesh.positions[std::size_t(t[2])]) - a;
+                    const Vec3 pv = raster::cross(d, e2);
+                    const double det = raster::dot(e1, pv);
+                    if (det == 0 || !std::isfinite(det)) continue;
+                    const Vec3 tv = p.camera.eye - a, qv = raster::cross(tv, e1);
+                    const double u = raster::dot(tv, pv) / det, v = raster::dot(d, qv) / det, hit = raster::dot(e2, qv) / det;
+                    // Well inside the triangle only: its edges depend on snapping.
+                    if (u < 0.05 || v < 0.05 || u + v > 0.95 || !(hit > 0) || hit >= best) continue;
+                    best = hit;
+                    const double l[3] = {1 - u - v, u, v};
+                    good = bad = Vec3{};
+                    for (int i = 0; i < 3; ++i) {
+                        const Vec3 nw = normal(it.mesh.normals[std::size_t(t[std::size_t(i)])]);
+                        good = good + unit_or_zero(nw) * l[i];
+                        bad = bad + nw * l[i];
+                    }
+                }
+            }
+            if (!std::isfinite(best)) continue;
+            const Color want = color_of(good), wrong = color_of(bad);
+            if (near(want, wrong, 12)) continue;
+            ++telling;
+            const Color got = mine.at(p.x0 + x, p.y0 + y);
+            unnormalized_like += near(got, wrong, 3);
+            normalized_like += near(got, want, 3);
+        }
+    }
+    if (unnormalized_like >= 10 && unnormalized_like > normalized_like) {
+        c.add("normal matrix", "TODO 9: at " + std::to_string(unnormalized_like) + " of " + std::to_string(telling) +
+                                   " pixels well inside the quad" + where +
+                                   " your normal colors are those of normals interpolated at the lengths the normal "
+                                   "matrix gives them: under a non-uniform scale it lengthens some normals and shortens "
+                                   "others, and a blend leans toward the longer ones. draw_mesh normalizes every normal "
+                                   "right after normal_matrix (step 1), before anything interpolates it");
+    }
+}
+
+// The fill rule on ready-made triangles whose vertices lie on pixel centers, drawn without a
+// depth test (m4.shared_edges): worked out here in exact integers on the 1/16-pixel grid, each
+// pixel shows the last triangle that covers its center by the top-left rule, or the
+// background. Where the picture differs only at centers that lie exactly on an edge, the fill
+// rule is the mistake.
+void judge_fill_rule(Ctx& c, const raster::Image& mine, const Panel& panel, const std::string& where) {
+    struct Tri {
+        std::int64_t x[3], y[3];
+        bool top_left[3];
+        Color color;
+    };
+    auto edge = [](std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by, std::int64_t px, std::int64_t py) {
+        return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+    };
+    std::vector<Tri> tris;
+    for (const ScreenTri& st : panel.screen_tris) {
+        Tri t;
+        for (int k = 0; k < 3; ++k) {
+            t.x[k] = std::llround(st.screen[std::size_t(k)].x * 16);
+            t.y[k] = std::llround(st.screen[std::size_t(k)].y * 16);
+        }
+        const std::int64_t area = edge(t.x[0], t.y[0], t.x[1], t.y[1], t.x[2], t.y[2]);
+        if (area == 0) continue;
+        if (area < 0) {
+            std::swap(t.x[1], t.x[2]);
+            std::swap(t.y[1], t.y[2]);
+        }
+        for (int k = 0; k < 3; ++k) {
+            const int n = (k + 1) % 3;
+            t.top_left[k] = (t.y[n] == t.y[k] && t.x[n] > t.x[k]) || t.y[n] < t.y[k];
+        }
+        const Vec3 v = st.color[0];
+        t.color = {raster::to_channel(v.x), raster::to_channel(v.y), raster::to_channel(v.z)};
+        tris.push_back(t);
+    }
+    long long on_edge = 0, on_wrong = 0, off_wrong = 0, excluded_shown = 0, dropped = 0;
+    std::string example;
+    for (int y = 0; y < panel.h; ++y) {
+        for (int x = 0; x < panel.w; ++x) {
+            const std::int64_t px = 16 * std::int64_t(x) + 8, py = 16 * std::int64_t(y) + 8;
+            int owner = -1;
+            std::vector<int> excluded;  // triangles whose closed area holds the center, which the rule leaves out
+            bool touches = false;
+            for (std::size_t i = 0; i < tris.size(); ++i) {
+                const Tri& t = tris[i];
+                bool inside = true, in = true, zero = false;
+                for (int k = 0; k < 3 && inside; ++k) {
+                    const int n = (k + 1) % 3;
+                    const std::int64_t e = edge(t.x[k], t.y[k], t.x[n], t.y[n], px, py);
+                    inside = e >= 0;
+                    if (e == 0) {
+                        zero = true;
+                        in &= t.top_left[k];
+                    }
+                }
+                if (!inside) continue;
+                touches |= zero;
+                if (in) owner = int(i);
+                else excluded.push_back(int(i));
+            }
+            on_edge += touches;
+            const Color want = owner >= 0 ? tris[std::size_t(owner)].color : panel.background;
+            const Color got = mine.at(panel.x0 + x, panel.y0 + y);
+            if (got == want) continue;
+            if (!touches) {
+                ++off_wrong;
+                continue;
+            }
+            ++on_wrong;
+            const bool shows_excluded = std::any_of(excluded.begin(), excluded.end(),
+                                                    [&](int i) { return tris[std::size_t(i)].color == got; });
+            excluded_shown += shows_excluded;
+            dropped += got == panel.background;
+            if (example.empty()) {
+                example = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") shows " + str(got) +
+                          (shows_excluded ? ", the color of a triangle the rule leaves its center out of," : "") +
+                          " where the top-left rule gives " +
+                          (owner >= 0 ? "its center to the triangle of color " + str(want) : "its center to no triangle (background)");
+            }
+        }
+    }
+    c.j.measures["pixels whose center lies exactly on an edge"] = double(on_edge);
+    c.j.measures["of those, shown wrong"] = double(on_wrong);
+    if (on_wrong == 0 || on_wrong < off_wrong) return;
+    std::string how;
+    if (excluded_shown > 0) {
+        how += std::to_string(excluded_shown) + " show a triangle the rule leaves out there (with no rule, e >= 0 on "
+               "every edge, both triangles of a shared edge draw its centers and the later one wins)";
+    }
+    if (dropped > 0) {
+        how += std::string(how.empty() ? "" : "; ") + std::to_string(dropped) +
+               " show the background, drawn by neither triangle of their edge (e > 0 on every edge)";
+    }
+    c.add("fill rule", "TODO 8: " + std::to_string(on_wrong) + " of the " + std::to_string(on_edge) +
+                           " pixels whose center lies exactly on an edge" + where + " show the wrong triangle" +
+                           (how.empty() ? "" : ": " + how) + ". For example, " + example +
+                           ". fill_triangle keeps milestone 2's top-left rule: once the area is positive, a center "
+                           "whose edge value is 0 is in only when that edge is a top edge (b.y == a.y and b.x > a.x) "
+                           "or a left edge (b.y < a.y), so of two triangles sharing an edge exactly one takes its "
+                           "centers");
+}
+
 void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, const raster::Image& expected);
 
-// fill_triangle (TODO 8) on m4.fill_triangle's own triangles, drawn by the render half of a
-// scene that calls it through draw_mesh (render.cpp, kFillKey), judged against the reference's
-// run of the same triangles as m4.fill_triangle judges it. Its most telling finding, or none.
-std::optional<cp::Finding> fill_triangle_fails(const cp::Artifacts& art, const cp::Artifacts& ref) {
-    const std::string image = kFillKey.substr(0, kFillKey.size() - 1);
+// fill_triangle (TODO 8) on m4.fill_triangle's own triangles, then on m4.shared_edges', drawn
+// by the render half of a scene that calls it through draw_mesh (render.cpp, kFillKey and
+// kFillRuleKey), judged against the reference's run of the same triangles as those checkpoints
+// judge them. The first that fails, with its most telling finding; or none.
+std::optional<cp::Finding> fill_triangle_fails_on(const cp::Artifacts& art, const cp::Artifacts& ref, const std::string& id,
+                                                  const std::string& fill_key);
+std::optional<std::pair<cp::Finding, std::string>> fill_triangle_fails(const cp::Artifacts& art, const cp::Artifacts& ref) {
+    for (const auto& [id, fill_key] : {std::pair{kFillScene, kFillKey}, std::pair{kFillRuleScene, kFillRuleKey}}) {
+        if (auto f = fill_triangle_fails_on(art, ref, id, fill_key)) return std::pair{*f, id};
+    }
+    return std::nullopt;
+}
+
+std::optional<cp::Finding> fill_triangle_fails_on(const cp::Artifacts& art, const cp::Artifacts& ref, const std::string& id,
+                                                  const std::string& fill_key) {
+    const std::string image = fill_key.substr(0, fill_key.size() - 1);
     const auto mine_it = art.images.find(image), ref_it = ref.images.find(image);
     if (ref_it == ref.images.end() || mine_it == art.images.end()) return std::nullopt;
     cp::Artifacts mine_fill, ref_fill;
     mine_fill.images["main"] = mine_it->second;
     ref_fill.images["main"] = ref_it->second;
-    mine_fill.values = cp::values_under(art.values, kFillKey);
-    ref_fill.values = cp::values_under(ref.values, kFillKey);
+    mine_fill.values = cp::values_under(art.values, fill_key);
+    ref_fill.values = cp::values_under(ref.values, fill_key);
     cp::Judgement scratch;
-    Ctx sub{scene(kFillScene), mine_fill.values, ref_fill.values, scratch};
+    Ctx sub{scene(id), mine_fill.values, ref_fill.values, scratch};
     judge_picture(sub, mine_fill, ref_fill, ref_it->second);
     if (scratch.findings.empty()) return std::nullopt;
-    // The finding that names an idea (perspective weights, depth keys, the test order) before
-    // a count, and a count before "the picture differs".
+    // The finding that names an idea (perspective weights, depth keys, the test order, the fill
+    // rule) before a count, and a count before "the picture differs".
     auto rank = [](const cp::Finding& f) {
-        if (f.topic == "perspective" || f.topic == "depth key" ||
+        if (f.topic == "perspective" || f.topic == "depth key" || f.topic == "indexing" ||
+            (f.topic == "fill rule" && f.message.find("lies exactly on an edge") != std::string::npos) ||
             f.message.find("failed the depth test") != std::string::npos) {
             return 0;
         }
@@ -808,11 +1039,11 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         for (Group g : prerequisite_groups(s)) passing.push_back(prerequisite_checkpoint(g));
         const std::string list = cp::join_once(passing);
         const auto colon = advice.find(": ");  // "TODO 9: what its caller must do"
-        const std::optional<cp::Finding> fill = s.id == kFillScene ? std::nullopt : fill_triangle_fails(art, ref);
+        const auto fill = s.id == kFillScene || s.id == kFillRuleScene ? std::nullopt : fill_triangle_fails(art, ref);
         if (fill) {
             // fill_triangle itself fails on its own checkpoint's triangles: that is the caller
             // to fix, whatever the scene is about.
-            const cp::Finding f = cp::fix_first(*fill, kFillScene, "this picture is drawn with it",
+            const cp::Finding f = cp::fix_first(fill->first, fill->second, "this picture is drawn with it",
                                                 "this picture cannot come out right before that checkpoint passes");
             c.j.findings.push_back(f);
         } else c.add(caller_topic, advice.substr(0, colon) + ": the picture differs from the expected one beyond the tolerance" +
@@ -861,18 +1092,52 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         // at every probe that differs was written by a fragment the depth test rejected.
         const bool float_format = panel.format == Format::kFloatZ || panel.format == Format::kReversedZ ||
                                   panel.format == Format::kInverseW;
-        int farther = 0, differ = 0;
+        const double key_slack = float_format ? 4 : 2;
+        int farther = 0, differ = 0, column_major = 0, off_surface = 0;
         for (std::size_t k = 0; k < panel.depth_probes.size(); ++k) {
             const std::string pk = key + ".probe" + std::to_string(k);
             const double a = get(c.mine, pk), b = get(c.ref, pk);
-            if (std::abs(a - b) <= (float_format ? 4 : 2)) continue;
+            if (std::abs(a - b) <= key_slack) continue;
             ++differ;
             farther += a > b;
+            // The key this pixel should hold sits where a buffer indexed x * height + y keeps it.
+            column_major += std::abs(get(c.mine, pk + ".column") - b) <= key_slack;
+            if (panel.format == Format::kInverseW) {
+                const auto [x, y] = panel.depth_probes[k];
+                const double w = inverse_w_of(a), ref_w = inverse_w_of(b);
+                bool mine_on = false, ref_on = false;
+                for (double sw : surface_ws(panel, x, y)) {
+                    mine_on |= std::abs(w - sw) <= 0.01 * sw;
+                    ref_on |= std::abs(ref_w - sw) <= 0.01 * sw;
+                }
+                off_surface += ref_on && !mine_on;
+            }
         }
-        const bool overwritten = differ > 0 && farther == differ;
+        // Every probe that differs holds the key of another pixel: the indexing, not the test.
+        const bool indexing = differ > 0 && column_major == differ;
+        // Every probe that differs holds a 1/w key of no surface at its pixel: the pixel's w.
+        const bool pixel_w = differ > 0 && off_surface == differ && !indexing;
+        const bool overwritten = differ > 0 && farther == differ && !indexing && !pixel_w;
         // A wrong number of fan triangles drawn changes every pixel count after it: those
         // findings would only repeat it, under the rasterizer's TODO.
-        bool triangles_off = false;
+        bool triangles_off = false, fragments_off = false;
+        // Fewer triangles culled and as many more drawn, with back faces culled: triangles the
+        // reference finds back-facing were drawn. A mesh triangle that repeats a position has
+        // zero area on the screen, which is a back face by the pinned sign (area >= 0).
+        const double mine_culled = get(c.mine, key + ".stats.triangles_culled"), ref_culled = get(c.ref, key + ".stats.triangles_culled");
+        const bool culled_drawn = panel.cull && mine_culled < ref_culled &&
+                                  mine_culled + get(c.mine, key + ".stats.triangles_drawn") ==
+                                      ref_culled + get(c.ref, key + ".stats.triangles_drawn");
+        long long zero_area = 0;
+        for (const Item& it : panel.items) {
+            for (const auto& t : it.mesh.triangles) {
+                const auto& q = it.mesh.positions;
+                const int n = static_cast<int>(q.size());
+                if (t[0] < 0 || t[0] >= n || t[1] < 0 || t[1] >= n || t[2] < 0 || t[2] >= n) continue;
+                const Vec3 a = q[std::size_t(t[0])], b = q[std::size_t(t[1])], d = q[std::size_t(t[2])];
+                zero_area += a == b || b == d || d == a;
+            }
+        }
         for (const auto& st : kStats) {
             const std::string k = key + ".stats." + st[0];
             const double a = get(c.mine, k), b = get(c.ref, k);
@@ -892,8 +1157,13 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             if (ok) continue;
             const bool per_pixel_count = name == "fragments" || name == "depth_tests" || name == "depth_writes" ||
                                          name == "interpolated" || (name == "shade_calls" && per_pixel_shading);
-            if (per_pixel_count && triangles_off) continue;
+            if (per_pixel_count && (triangles_off || fragments_off)) continue;
             if (name == "triangles_culled" || name == "triangles_drawn") triangles_off = true;
+            // Where every vertex lies on a pixel center, a fragment count off is the fill rule
+            // (centers on shared edges taken twice or by neither); the counts per fragment
+            // after it only repeat it.
+            const bool fill_rule_count = name == "fragments" && s.checks.fill_rule && !panel.screen_tris.empty();
+            fragments_off |= fill_rule_count;
             std::string why;
             if (b == 0 && name == "triangles_culled" && panel.cull) {
                 why = ": back faces are culled here, but every triangle faces the eye once clipped: clip first, then "
@@ -922,16 +1192,52 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 why = ": the depth probes below hold keys farther than the reference's, so a fragment that failed "
                       "the depth test wrote its key; test first, and write color and key only when it passes";
             }
+            if (culled_drawn && name == "triangles_drawn") continue;  // the culled count's finding says it
+            if (culled_drawn && name == "triangles_culled") {
+                const double missed = b - a;
+                why = ": " + plural(missed, "fan triangle") + (missed == 1 ? " was" : " were") +
+                      " drawn that the reference culls" +
+                      (zero_area >= missed
+                           ? std::string(". This mesh has ") + plural(double(zero_area), "triangle") +
+                                 " of zero area (a position repeated): such a triangle is a back face too, since "
+                                 "m3::is_back_facing's signed screen area >= 0 includes 0, so with needs.cull it is "
+                                 "culled and counted in triangles_culled, not drawn"
+                           : ": a back face has a signed screen area >= 0 (m3::is_back_facing), 0 included");
+            }
+            if (fill_rule_count) {
+                why = std::string(": the triangles tile their area and every vertex lies on a pixel center, so "
+                                  "each center on a shared edge must be counted once, by the one triangle the "
+                                  "top-left rule gives it to (") +
+                      (a > b ? "more: centers on shared edges were counted twice)" : "fewer: centers on shared edges were counted by neither)");
+            }
             const bool needless = b == 0 && !(name == "triangles_culled" && panel.cull);
             const char* counted = a == 1 ? st[3] : st[2];
-            c.add(needless ? "needs" : st[1], std::string(st[4]) + ": " + num(a) + " " + counted + where + ", expected " +
+            c.add(needless ? "needs" : fill_rule_count ? "fill rule" : culled_drawn && name == "triangles_culled" ? "culling" : st[1], std::string(st[4]) + ": " + num(a) + " " + counted + where + ", expected " +
                                                 (per_triangle ? num(b) : "about " + num(b)) + why);
         }
         for (std::size_t k = 0; k < panel.depth_probes.size(); ++k) {
             const std::string pk = key + ".probe" + std::to_string(k);
             const double a = get(c.mine, pk), b = get(c.ref, pk);
-            if (std::abs(a - b) <= (float_format ? 4 : 2)) continue;
+            if (std::abs(a - b) <= key_slack) continue;
             const auto [x, y] = panel.depth_probes[k];
+            if (indexing) {
+                c.add("indexing", "TODO 8: the depth buffer at pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")" +
+                                      where + " holds key " + num(a) + ", expected " + num(b) + ", and the key expected there "
+                                      "sits at index x * height + y = " + std::to_string(x * panel.h + y) +
+                                      " instead, as at every probe that differs: the buffer is indexed column by column, "
+                                      "so each fragment tests and writes another pixel's key. frame.depth is row-major "
+                                      "like the image: the key of pixel (x, y) is depth[y * width + x]");
+                break;  // one finding says it; every probe that differs is the same mistake
+            }
+            if (pixel_w) {
+                c.add("depth key", "TODO 8: the 1/w key at pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")" +
+                                       where + " is " + num(a) + " (w = " + num(inverse_w_of(a)) + "), expected " + num(b) +
+                                       " (w = " + num(inverse_w_of(b)) + ", where the ray through the pixel meets the "
+                                       "surface): no surface at this pixel is at your w. The pixel's w is 1 / sum(l_i / w_i): "
+                                       "1/w is affine on the screen, w is not, so sum(l_i * w_i) is too far inside a "
+                                       "triangle; that sum is only the fallback where sum(l_i / w_i) is not > 0 and finite");
+                continue;
+            }
             double d = std::nan("");
             if (panel.format == Format::kFloatZ && b >= 0 && b < 4294967296.0) d = std::bit_cast<float>(static_cast<std::uint32_t>(b));
             // A key written by a rejected fragment is the depth test's order (test, then write).
@@ -946,6 +1252,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         }
         if (!sized) continue;
         if (!panel.screen_tris.empty()) judge_screen_weights(c, *mine, ref, panel);
+        if (s.checks.fill_rule && !panel.screen_tris.empty()) judge_fill_rule(c, *mine, panel, where);
+        if (s.checks.normal_lengths) judge_normal_lengths(c, *mine, panel, where);
         if (s.checks.checker_error) {
             const raster::Image truth = analytic_checker(panel);
             long long inside = 0, wrong = 0, ref_wrong = 0;

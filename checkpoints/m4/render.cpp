@@ -320,6 +320,10 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
             const auto [x, y] = panel.depth_probes[k];
             const std::size_t at = std::size_t(y) * std::size_t(panel.w) + std::size_t(x);
             out.values[key + ".probe" + std::to_string(k)] = at < frame.depth.size() ? double(frame.depth[at]) : -1;
+            // Where a buffer indexed column by column (x * height + y) keeps this pixel's key.
+            const std::size_t column = std::size_t(x) * std::size_t(panel.h) + std::size_t(y);
+            out.values[key + ".probe" + std::to_string(k) + ".column"] =
+                column < frame.depth.size() ? double(frame.depth[column]) : -1;
         }
         out.values[key + ".stats.triangles_clipped"] = double(total.triangles_clipped);
         out.values[key + ".stats.triangles_culled"] = double(total.triangles_culled);
@@ -348,17 +352,19 @@ cp::Artifacts render_scene(const Scene& s) {
         // The functions the picture is drawn with, each on its own checkpoint's inputs: the
         // judge checks them before it judges the picture (scenes.h, prerequisite_groups).
         for (Group g : prerequisite_groups(s)) cp::record_under(out, prerequisite_key(g), [&](Values& v) { numbers(g, v); });
-        // fill_triangle on m4.fill_triangle's own triangles, for a scene drawn through
-        // draw_mesh: when the picture differs, the judge tells a wrong fill_triangle (TODO 8)
-        // from a wrong draw_mesh (TODO 9) by these, not by the scene's theme.
+        // fill_triangle on m4.fill_triangle's and m4.shared_edges' own triangles, for a scene
+        // drawn through draw_mesh: when the picture differs, the judge tells a wrong
+        // fill_triangle (TODO 8) from a wrong draw_mesh (TODO 9) by these, not by the scene's theme.
         const bool pipeline = std::any_of(s.panels.begin(), s.panels.end(), [](const Panel& p) { return p.screen_tris.empty(); });
         if (pipeline) {
-            const Scene& fill = scene(kFillScene);
-            cp::record_fill_scene(out, kFillKey, fill.width, fill.height, [&](raster::Image& fill_img, cp::Artifacts& scratch) {
-                g_out = &scratch;
-                draw_panels(fill, fill_img, scratch);
-                g_out = &out;
-            });
+            for (const auto& [id, fill_key] : {std::pair{kFillScene, kFillKey}, std::pair{kFillRuleScene, kFillRuleKey}}) {
+                const Scene& fill = scene(id);
+                cp::record_fill_scene(out, fill_key, fill.width, fill.height, [&](raster::Image& fill_img, cp::Artifacts& scratch) {
+                    g_out = &scratch;
+                    draw_panels(fill, fill_img, scratch);
+                    g_out = &out;
+                });
+            }
         }
         if (!s.panels.empty()) draw_panels(s, img, out);
     });

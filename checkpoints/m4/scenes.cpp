@@ -191,6 +191,54 @@ std::vector<Scene> build() {
         add(s);
     }
 
+    {
+        Scene s = picture("m4.shared_edges", "A grid and two fans whose shared edges run through pixel centers",
+                          "a center exactly on an edge belongs to one triangle only: milestone 2's top-left rule, "
+                          "in fill_triangle too",
+                          {8}, 96, 96);
+        Panel pn = panel(cam({0, 0, 5}), {}, 0, 0, 96, 96, Shade::kVertexColor, false);
+        const Color palette[7] = {kRed, kGreen, kBlue, kYellow, kDim, Color{240, 130, 40}, Color{200, 90, 210}};
+        // Every vertex on a pixel center, so every horizontal and vertical edge and every edge of
+        // slope 1, 2, 1/2, 3/2 or 2/3 runs through centers: the fill rule alone decides them.
+        // Both windings, in an order where the later triangle of a shared edge is sometimes the
+        // one the rule gives its centers to and sometimes not.
+        auto add_tri = [&](Vec3 a, Vec3 b, Vec3 c) {
+            const Color col = palette[pn.screen_tris.size() % 7];
+            const Vec3 v{double(col.r), double(col.g), double(col.b)};
+            const bool flip = pn.screen_tris.size() % 3 == 1;
+            pn.screen_tris.push_back({{a, flip ? c : b, flip ? b : c}, {1, 1.5, 2}, {v, v, v}});
+        };
+        // A grid of 5 x 5 cells of 8 pixels, each cut along one of its diagonals.
+        for (int j = 0; j < 5; ++j) {
+            for (int i = 0; i < 5; ++i) {
+                const double x0 = 4.5 + 8 * i, y0 = 4.5 + 8 * j, x1 = x0 + 8, y1 = y0 + 8;
+                if ((i + j) % 2 == 0) {
+                    add_tri({x0, y0, 0}, {x1, y0, 0}, {x1, y1, 0});
+                    add_tri({x0, y0, 0}, {x1, y1, 0}, {x0, y1, 0});
+                } else {
+                    add_tri({x1, y0, 0}, {x0, y1, 0}, {x0, y0, 0});
+                    add_tri({x1, y0, 0}, {x1, y1, 0}, {x0, y1, 0});
+                }
+            }
+        }
+        // Two fans of twelve triangles around a center.
+        const int spokes[2][12][2] = {
+            {{20, 0}, {20, 10}, {10, 20}, {0, 20}, {-10, 20}, {-20, 10}, {-20, 0}, {-20, -10}, {-10, -20}, {0, -20}, {10, -20}, {20, -10}},
+            {{18, 0}, {18, 12}, {12, 18}, {0, 18}, {-12, 18}, {-18, 12}, {-18, 0}, {-18, -12}, {-12, -18}, {0, -18}, {12, -18}, {18, -12}}};
+        const Vec3 centers[2] = {{71.5, 25.5, 0}, {49.5, 73.5, 0}};
+        for (int f = 0; f < 2; ++f) {
+            for (int k = 0; k < 12; ++k) {
+                const auto& a = spokes[f][k];
+                const auto& b = spokes[f][(k + 1) % 12];
+                const Vec3 c = centers[f];
+                add_tri(c, c + Vec3{double(a[0]), double(a[1]), 0}, c + Vec3{double(b[0]), double(b[1]), 0});
+            }
+        }
+        s.panels.push_back(pn);
+        s.checks.fill_rule = true;
+        add(s);
+    }
+
     // ---- occlusion ----
     {
         Scene s = picture("m4.occlusion_order", "Three overlapping triangles, drawn in two orders",
@@ -222,7 +270,9 @@ std::vector<Scene> build() {
     }
     {
         Scene s = picture("m4.depth_view", "Depth as gray levels, and the keys at known pixels",
-                          "gray = round(255 * (1 - d)), d interpolated with screen-space weights", {8, 6, 1}, 96, 96);
+                          "gray = round(255 * (1 - d)), d interpolated with screen-space weights; the 1/w key of "
+                          "the pixel's own w, 1 / sum(l_i / w_i)",
+                          {8, 6, 1}, 192, 96);
         Panel pn = panel(cam({0.3, 1.6, 4.2}, {0.01, -0.2, 0.02}, 2.5, 8), {}, 0, 0, 96, 96, Shade::kDepthView);
         pn.items.push_back(item(quad_mesh({-1.8, -0.8, 1.7}, {1.8, -0.8, 1.7}, {1.8, -0.8, -1.9}, {-1.8, -0.8, -1.9}, kRed)));
         Item box = item(sphere_mesh(12, true));
@@ -236,6 +286,14 @@ std::vector<Scene> build() {
         // clippers (the picture's 3 gray levels absorb that).
         pn.depth_probes = {{48, 50}, {50, 30}, {53, 41}, {45, 40}, {61, 38}, {57, 48}};
         s.panels.push_back(pn);
+        // Right: a floor from w = 3 to w = 12 in the 1/w format, wholly inside the view volume
+        // (so its two triangles are the mesh's own), its keys read back well inside each
+        // triangle, where w interpolated with the screen weights is 25% to 60% too far.
+        Panel floor = panel(cam({0.05, 0.9, 3.2}, {0.0, -0.6, -2.0}, 0.5, 20), {}, 96, 0, 96, 96, Shade::kDepthView);
+        floor.format = Format::kInverseW;
+        floor.items.push_back(item(quad_mesh({-0.9, -0.8, 0.4}, {0.9, -0.8, 0.4}, {1.5, -0.8, -9}, {-1.5, -0.8, -9}, kRed)));
+        floor.depth_probes = {{58, 68}, {33, 56}, {40, 46}};
+        s.panels.push_back(floor);
         add(s);
     }
     {
@@ -331,8 +389,11 @@ std::vector<Scene> build() {
         add(s);
     }
     {
-        Scene s = picture("m4.nonuniform_scale", "A squashed sphere: normals need the inverse transpose",
-                          "the model matrix tilts normals the wrong way under non-uniform scale", {4, 5, 9}, 96, 96);
+        Scene s = picture("m4.nonuniform_scale",
+                          "A squashed sphere: normals need the inverse transpose (right: normalized, then interpolated)",
+                          "the model matrix tilts normals the wrong way under non-uniform scale, and the normal matrix "
+                          "changes their lengths: normalize each one",
+                          {4, 5, 9}, 192, 96);
         Item it = item(sphere_mesh(24, true));
         it.size = {1.7, 0.55, 1};
         it.axis = {0, 0, 1};
@@ -341,6 +402,17 @@ std::vector<Scene> build() {
         pn.cull = true;
         pn.lights = {directional({-1, -1.2, -0.4})};
         s.panels.push_back(pn);
+        // Right: a quad with its own normals, squashed harder, as normal colors. The normal
+        // matrix shortens normals along x and lengthens those along y, so normals left at the
+        // lengths it gives them and then interpolated lean toward the longer ones.
+        Item quad = item(quad_mesh({-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, kRed));
+        quad.mesh.normals = {{-0.8, -0.15, 0.5}, {0.75, -0.2, 0.55}, {0.15, 0.85, 0.5}, {-0.2, 0.8, 0.45}};
+        quad.size = {1.5, 0.5, 1};
+        quad.axis = {0, 0, 1};
+        quad.angle = 0.2;
+        Panel normals = panel(pn.camera, {quad}, 96, 0, 96, 96, Shade::kNormalView);
+        s.panels.push_back(normals);
+        s.checks.normal_lengths = true;
         add(s);
     }
     {
@@ -468,8 +540,10 @@ std::vector<Scene> build() {
         add(s);
     }
     {
-        Scene s = picture("m4.degenerate_normals", "Zero-area and needle triangles in a lit mesh: no NaN",
-                          "a zero normal stays zero and gives the ambient color", {4, 5, 8}, 96, 96);
+        Scene s = picture("m4.degenerate_normals",
+                          "Zero-area and needle triangles in a lit mesh: no NaN (right: back faces culled)",
+                          "a zero normal stays zero and gives the ambient color; a zero-area triangle is a back face",
+                          {4, 5, 8, 9}, 192, 96);
         Mesh m;
         m.positions = {{-1.5, -1.2, 0}, {1.4, -1.3, 0.2}, {0.1, 1.4, -0.1}, {1.4, -1.3, 0.2},  // 3 repeats 1
                        {-1.5, -1.2, 0}, {0.1, 1.4, -0.1},  {1.8, 1.2, 0.1},  {1.8000001, 1.2, 0.1},
@@ -479,6 +553,12 @@ std::vector<Scene> build() {
         Panel pn = panel(cam({0.02, 0.03, 4}), {item(m)}, 0, 0, 96, 96, Shade::kPerPixel);
         pn.lights = {point({1, 1, 3})};
         s.panels.push_back(pn);
+        // Right: the same mesh with back faces culled. A fan triangle of zero area (triangles 1, 2
+        // and 5 repeat a position) is a back face too (signed area >= 0): culled, and counted.
+        Panel culled = pn;
+        culled.x0 = 96;
+        culled.cull = true;
+        s.panels.push_back(culled);
         add(s);
     }
     {
@@ -591,9 +671,17 @@ Scene vary(const Scene& pub, Rng& rng) {
         for (Panel& p : s.panels) p.camera.eye = p.camera.eye + d;
     }
     // The ready-made triangles moved by up to two pixels, the same move for the k-th vertex of
-    // each (the tie keeps its two identical triangles).
+    // each (the tie keeps its two identical triangles). A fill-rule scene moves all of its
+    // vertices by the same whole pixels: they stay on pixel centers and shared.
     for (Panel& p : s.panels) {
         if (p.screen_tris.empty()) continue;
+        if (s.checks.fill_rule) {
+            const Vec3 whole{double(rng.uniform(-2, 2)), double(rng.uniform(-2, 2)), 0};
+            for (ScreenTri& t : p.screen_tris) {
+                for (Vec3& v : t.screen) v = v + whole;
+            }
+            continue;
+        }
         std::array<Vec3, 3> move;
         for (Vec3& m : move) m = {rng.uniform(-200, 200) / 100.0, rng.uniform(-200, 200) / 100.0, 0};
         for (ScreenTri& t : p.screen_tris) {

@@ -97,6 +97,10 @@ struct Checks {
     bool zfight = false;         // per panel: pixels where the far surface shows
     bool sphere_error = false;   // per panel: error against the analytic sphere (item 0)
     bool shading_chart = false;  // sphere_error per panel, held to the reference's, and charted against time
+    bool normal_lengths = false;  // per kNormalView panel: its colors against the normals interpolated after and
+                                  // before they are normalized, worked out here by ray casting
+    bool fill_rule = false;      // per panel (screen_tris, no depth test): every pixel shows the one triangle that
+                                 // covers its center by the top-left rule, worked out here in exact integers
 };
 
 struct Scene {
@@ -129,6 +133,10 @@ std::string prerequisite_checkpoint(Group g);  // the public numbers scene that 
 // "fill_triangle", so the judge can tell which caller is wrong.
 inline const std::string kFillScene = "m4.fill_triangle";
 inline const std::string kFillKey = "fill_triangle.";
+// Likewise kFillRuleScene's triangles, whose shared edges run through pixel centers: a
+// pipeline picture that differs by a pixel on such an edge is fill_triangle's fill rule.
+inline const std::string kFillRuleScene = "m4.shared_edges";
+inline const std::string kFillRuleKey = "shared_edges.";
 
 // Shapes shared with the demo, the tables and the benchmark.
 // A UV sphere of radius 1: `segments` around, segments / 2 from pole to pole, with its exact
