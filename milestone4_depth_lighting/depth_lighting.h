@@ -253,7 +253,7 @@ struct Needs {
 // What was done, counted (the checkpoints compare these with the reference's counts).
 struct Stats {
     long long triangles_clipped = 0;  // mesh triangles not entirely inside, sent to clip_triangle
-    long long triangles_culled = 0;   // fan triangles skipped as back faces
+    long long triangles_culled = 0;   // fan triangles skipped as back faces (area >= 0: zero area too)
     long long triangles_drawn = 0;    // fan triangles passed to fill_triangle
     long long fragments = 0;          // pixel centers covered (inside the image)
     long long depth_tests = 0;        // fragments tested against the depth buffer
@@ -272,7 +272,8 @@ struct FillState {
     bool point_light = false;            // kPerPixel: some light is a point light (interpolate world)
 };
 
-// Fills one triangle (both windings, milestone 2's snapping and fill rule) into the frame.
+// Fills one triangle (both windings, milestone 2's snapping and top-left fill rule: a center on
+// an edge two triangles share is drawn by exactly one of them) into the frame.
 // Per covered pixel center: the screen weights l; d from them; with depth_test, the key
 // depth_key(format, z_ndc, w) with the pixel's w = 1 / sum(l_i / w_i) and the depth test; the color of its mode; then
 // color and key written. A fragment's attributes are interpolated (and a kPerPixel fragment
