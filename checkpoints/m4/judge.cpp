@@ -1125,7 +1125,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         // reference finds back-facing were drawn. A mesh triangle that repeats a position has
         // zero area on the screen, which is a back face by the pinned sign (area >= 0).
         const double mine_culled = get(c.mine, key + ".stats.triangles_culled"), ref_culled = get(c.ref, key + ".stats.triangles_culled");
-        const bool culled_drawn = panel.cull && mine_culled < ref_culled &&
+        // Without culling, any triangle counted as culled was drawn by the reference.
+        const bool culled_drawn = (panel.cull ? mine_culled < ref_culled : ref_culled == 0 && mine_culled > 0) &&
                                   mine_culled + get(c.mine, key + ".stats.triangles_drawn") ==
                                       ref_culled + get(c.ref, key + ".stats.triangles_drawn");
         long long zero_area = 0;
@@ -1193,7 +1194,14 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                       "the depth test wrote its key; test first, and write color and key only when it passes";
             }
             if (culled_drawn && name == "triangles_drawn") continue;  // the culled count's finding says it
-            if (culled_drawn && name == "triangles_culled") {
+            if (culled_drawn && name == "triangles_culled" && !panel.cull) {
+                why = ": this scene does not cull (needs.cull is false), so every fan triangle goes to fill_triangle "
+                      "and counts as drawn" +
+                      (zero_area >= a ? std::string(", one of zero area too (this mesh has ") +
+                                            plural(double(zero_area), "triangle") +
+                                            " repeating a position): fill_triangle draws nothing for it"
+                                      : std::string());
+            } else if (culled_drawn && name == "triangles_culled") {
                 const double missed = b - a;
                 why = ": " + plural(missed, "fan triangle") + (missed == 1 ? " was" : " were") +
                       " drawn that the reference culls" +
@@ -1210,7 +1218,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                   "top-left rule gives it to (") +
                       (a > b ? "more: centers on shared edges were counted twice)" : "fewer: centers on shared edges were counted by neither)");
             }
-            const bool needless = b == 0 && !(name == "triangles_culled" && panel.cull);
+            const bool needless = b == 0 && !(name == "triangles_culled" && (panel.cull || culled_drawn));
             const char* counted = a == 1 ? st[3] : st[2];
             c.add(needless ? "needs" : fill_rule_count ? "fill rule" : culled_drawn && name == "triangles_culled" ? "culling" : st[1], std::string(st[4]) + ": " + num(a) + " " + counted + where + ", expected " +
                                                 (per_triangle ? num(b) : "about " + num(b)) + why);
