@@ -1267,10 +1267,12 @@ double share_off(const raster::Image& img, const Panel& p, const Truth& t) {
 // The pixels that differ from the expected image beyond the tolerance (strictly), and how many of
 // them a ray finds on an item whose normal map does not repeat, at uv outside [0, 1] on an axis
 // that does not repeat: there the map's own wrap modes decide the texel. `modes` names the wrap
-// modes of the first such map ("u clamp to edge, v mirrored repeat"), `where` its panel.
+// modes of the first such map ("u clamp to edge, v mirrored repeat"), `where` its panel;
+// `only_u` and `only_v` count those of them where only that axis is outside (the other inside
+// [0, 1] or repeating), and `mode_u`, `mode_v` name that map's modes alone.
 struct NormalWrapDiff {
-    long long strict = 0, outside = 0;
-    std::string modes, where;
+    long long strict = 0, outside = 0, only_u = 0, only_v = 0;
+    std::string modes, where, mode_u, mode_v;
 };
 NormalWrapDiff normal_map_wrap_diff(const Scene& s, const raster::Image& mine, const raster::Image& expected,
                                     const cp::Tolerance& tol) {
@@ -1302,11 +1304,16 @@ NormalWrapDiff normal_map_wrap_diff(const Scene& s, const raster::Image& mine, c
                 const TextureSpec* map = h.tri ? map_of(p, h.tri->item) : nullptr;
                 if (!map) continue;
                 const Vec2 uv = uv_at(h);
-                if ((map->wrap_u != Wrap::kRepeat && (uv.x < 0 || uv.x > 1)) ||
-                    (map->wrap_v != Wrap::kRepeat && (uv.y < 0 || uv.y > 1))) {
+                const bool off_u = map->wrap_u != Wrap::kRepeat && (uv.x < 0 || uv.x > 1);
+                const bool off_v = map->wrap_v != Wrap::kRepeat && (uv.y < 0 || uv.y > 1);
+                if (off_u || off_v) {
                     ++out.outside;
+                    out.only_u += off_u && !off_v;
+                    out.only_v += off_v && !off_u;
                     if (out.modes.empty()) {
-                        out.modes = std::string("u ") + wrap_name(map->wrap_u) + ", v " + wrap_name(map->wrap_v);
+                        out.mode_u = wrap_name(map->wrap_u);
+                        out.mode_v = wrap_name(map->wrap_v);
+                        out.modes = "u " + out.mode_u + ", v " + out.mode_v;
                         out.where = s.panels.size() > 1 ? " of panel " + std::to_string(pi + 1) : "";
                     }
                 }
@@ -1937,12 +1944,21 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         // the map was read with other wrap modes than its own (repeat).
         const NormalWrapDiff nw = normal_map_wrap_diff(s, *mine, expected, tolerance_for(expected));
         if (nw.outside >= 20 && 10 * nw.outside >= 9 * nw.strict) {
+            // Nearly all of them where only one axis leaves [0, 1]: that axis's mode was not its own.
+            const std::string axis = 10 * nw.only_v >= 9 * nw.outside   ? "v"
+                                     : 10 * nw.only_u >= 9 * nw.outside ? "u"
+                                                                        : "";
+            const std::string one_axis =
+                axis.empty() ? std::string()
+                             : "; all but a few of them where only " + axis + " is outside [0, 1] (" + (axis == "u" ? "v" : "u") +
+                                   " inside it), so it is " + axis + " that was read with another mode than its own, " +
+                                   (axis == "u" ? nw.mode_u : nw.mode_v) + ": pass wrap_" + axis + " for " + axis;
             c.add("normal map", "TODO 5: " + std::to_string(nw.outside) + " of the " + std::to_string(nw.strict) +
                                     " pixels that differ beyond the tolerance lie on the normal-mapped surface" + nw.where +
                                     " at uv outside [0, 1], where its normal map does not repeat (" + nw.modes +
                                     "): there the normal map's own wrap modes decide which texel is read (read with "
-                                    "repeat, bumps rise where clamp to edge stretches the flat edge texels, and mirrored "
-                                    "repeat runs them backwards)");
+                                    "repeat, bumps rise where clamp to edge stretches the flat edge texels, and where "
+                                    "mirrored repeat reads a flat part of the map)" + one_axis);
             c.j.findings.back().hint = "fill_triangle reads the normal map with sample_bilinear on level 0 and the map's own "
                                        "wrap modes: sample_bilinear(level 0, uv, normal_map->wrap_u, normal_map->wrap_v)";
         }

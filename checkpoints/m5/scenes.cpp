@@ -62,12 +62,13 @@ raster::Image texture_image(const TextureSpec& t) {
                 case Pattern::kBumps: {
                     // Round bumps h = A (1 - q)^2 (q = r^2 / R^2, r < R), their normals
                     // normalize(-dh/dx, -dh/dy, 1) with x right (+u) and y DOWN the image (+v).
+                    // bumps_top_half: the bottom half flat (whole cells when cells is even).
                     const double cw = double(w) / cells, ch = double(h) / cells;
                     const double lx = (x + 0.5) / cw - std::floor((x + 0.5) / cw) - 0.5;
                     const double ly = (y + 0.5) / ch - std::floor((y + 0.5) / ch) - 0.5;
                     const double R = 0.4, A = t.bump_height, q = (lx * lx + ly * ly) / (R * R);
                     Vec3 n{0, 0, 1};
-                    if (q < 1) n = unit(Vec3{4 * A * lx * (1 - q) / (R * R), 4 * A * ly * (1 - q) / (R * R), 1});
+                    if (q < 1 && !(t.bumps_top_half && 2 * y >= h)) n = unit(Vec3{4 * A * lx * (1 - q) / (R * R), 4 * A * ly * (1 - q) / (R * R), 1});
                     c = {byte(255 * (n.x + 1) / 2), byte(255 * (n.y + 1) / 2), byte(255 * (n.z + 1) / 2)};
                     break;
                 }
@@ -501,7 +502,8 @@ std::vector<Scene> build() {
                           "B itself: with sheared uv it is not perpendicular to T); the texel as 2 t / 255 - 1; N "
                           "normalized before perturb_normal (inside a triangle of the prism the interpolated normal is "
                           "shorter than 1); the map read with its own wrap modes (on the right, uv outside [0, 1]: "
-                          "clamp to edge in u stretches the flat edge texels, mirrored repeat in v reads it backwards)",
+                          "clamp to edge in u stretches the flat edge texels; the bumps lie in the map's top half, and "
+                          "mirrored repeat in v reads that half again above the map and the flat bottom half below it)",
                           {7, 6, 5, 9}, 512, 96);
         for (int p = 0; p < 2; ++p) {
             Mesh q = quad({-1.7, -1.2, 0}, {1.7, -1.2, 0}, {1.7, 1.2, 0}, {-1.7, 1.2, 0});
@@ -538,12 +540,16 @@ std::vector<Scene> build() {
         // the quad's uv run past [0, 1] on every side. Left and right of the middle third, clamp
         // stretches the map's flat edge texels (no bump reaches the edge), so the expected surface
         // is smooth there; read with repeat, steep bumps appear, lit by a light raking along u.
+        // The map's bumps lie in its top half only: above the map (v < 0) mirrored repeat reads
+        // that top half again, and below it (v > 1) the flat bottom half, so the expected surface
+        // is smooth below the middle; read with repeat in v, the two swap and bumps rise there.
         Mesh wq = quad({-1.7, -1.2, 0}, {1.7, -1.2, 0}, {1.7, 1.2, 0}, {-1.7, 1.2, 0});
         wq.uvs = {{-1, 1.5}, {2, 1.5}, {2, -0.5}, {-1, -0.5}};
         MaterialSpec wm = plain({200, 180, 160}, {140, 140, 140}, 24);
         wm.normal_map = 0;
-        Panel pw = panel(cam({0.02, 0.03, 4.2}), {item(wq, wm)},
-                         {tex(Pattern::kBumps, 32, 32, 2, Wrap::kClampToEdge, Wrap::kMirroredRepeat)}, 384, 0, 128, 96);
+        TextureSpec half_bumps = tex(Pattern::kBumps, 32, 32, 2, Wrap::kClampToEdge, Wrap::kMirroredRepeat);
+        half_bumps.bumps_top_half = true;
+        Panel pw = panel(cam({0.02, 0.03, 4.2}), {item(wq, wm)}, {half_bumps}, 384, 0, 128, 96);
         pw.lights = {sun({-0.9, -0.25, -0.45}, {0.8, 0.8, 0.8})};
         s.panels.push_back(pw);
         s.demo = true;

@@ -45,6 +45,7 @@ struct TextureSpec {
     Wrap wrap_u = Wrap::kRepeat, wrap_v = Wrap::kRepeat;
     std::uint32_t seed = 1;  // kNoise
     double bump_height = 0.1;  // kBumps: each bump's height, in cells
+    bool bumps_top_half = false;  // kBumps: bumps only in the top half of the image (y < h / 2), flat below
 };
 raster::Image texture_image(const TextureSpec& t);
 
