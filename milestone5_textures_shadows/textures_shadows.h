@@ -83,12 +83,12 @@
 //    that casts shadows into a resolution x resolution float-Z depth buffer with milestone 4's
 //    rules (m4::draw_mesh, depth only, both faces). A world point p maps through m3::to_screen
 //    of that matrix to a texel column floor(x), row floor(y) and a depth d = (z_ndc + 1) / 2.
-//    It is in shadow at a texel when d - bias / (2r) > the stored depth (r = map.radius, the
-//    settings' radius the map was drawn with: d spans the box's 2r world units), with the bias
-//    in world units bias = constant + slope * min(tan(theta), 10), tan(theta) = sqrt(1 - c^2) / c
-//    for c = dot(N, L) > 0. A texel outside the map, or never drawn (kClearKey), is lit. Without
-//    PCF the factor is 1 (lit) or 0; with PCF it is the lit fraction of the 3x3 texels around
-//    that one (any order of the nine).
+//    It is in shadow at a texel when d - bias / (2r) > the stored depth, strictly (a tie is lit;
+//    r = map.radius, the settings' radius the map was drawn with: d spans the box's 2r world
+//    units), with the bias in world units bias = constant + slope * min(tan(theta), 10),
+//    tan(theta) = sqrt(1 - c^2) / c for c = dot(N, L) > 0. A texel outside the map, or never
+//    drawn (kClearKey), is lit. Without PCF the factor is 1 (lit) or 0; with PCF it is the lit
+//    fraction of the 3x3 texels around that one (any order of the nine).
 //
 //  * Only what a scene needs (tested through Stats): untextured materials never sample, a
 //    mipmap pyramid is built (once per texture) when a mip filter reads a level above 0, and

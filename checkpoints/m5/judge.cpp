@@ -347,6 +347,7 @@ enum class Lookup {
     kOverR,       // d - bias / r: the bias converted to depth with half the box's depth
     kRawDirection,  // c = dot(n, -direction) with the direction as passed, not normalized
     kUnflipped,   // the row from NDC y as it is, without to_screen's flip
+    kTieShadowed, // d - bias / (2r) >= stored: a tie shadowed
 };
 
 // The bias of a shadow case in world units: constant + slope * min(tan(theta), 10), with
@@ -359,6 +360,11 @@ double t_bias(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::kRu
     return c.constant_bias + c.slope_bias * (mode == Lookup::kUncapped ? tan_t : std::min(tan_t, 10.0));
 }
 
+// d - bias / (2r), the biased depth the rule compares with the stored one.
+double t_shadow_depth(const TinyMap& map, const ShadowCase& c) {
+    const Vec4 clip = mul(t_light(map.direction, map.center, map.radius), Vec4{c.p.x, c.p.y, c.p.z, 1});
+    return (clip.z / clip.w + 1) / 2 - t_bias(map, c) / (2 * map.radius);
+}
 
 // The shadow factor on the tiny map.
 double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::kRule) {
@@ -378,7 +384,9 @@ double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::k
         const std::uint32_t key = map.keys[std::size_t(row) * std::size_t(map.resolution) + std::size_t(col)];
         if (key == 0xFFFFFFFFu) return 1.0;
         const double stored = std::bit_cast<float>(key);
-        const bool shadowed = mode == Lookup::kReversed ? test < stored : test > stored;
+        const bool shadowed = mode == Lookup::kReversed       ? test < stored
+                              : mode == Lookup::kTieShadowed ? test >= stored
+                                                              : test > stored;
         return shadowed ? 0.0 : 1.0;
     };
     const double col = std::floor(x), row = std::floor(y);
@@ -1013,6 +1021,10 @@ void judge_shadow(Ctx& c) {
             topic = "shadow bias";
             why = ": tan(theta) = " + num(round4((t_bias(map, k, Lookup::kUncapped) - k.constant_bias) / k.slope_bias)) +
                   " here was not capped: bias = constant + slope * min(tan(theta), 10) = " + num(round4(bias)) + " world units";
+        } else if (fits(Lookup::kTieShadowed) && close(mine, t_shadow(map, k, Lookup::kTieShadowed), 1e-9)) {
+            why = ": here d - bias / (2r) EQUALS the stored depth (" + num(round4(t_shadow_depth(map, k))) +
+                  ", a surface at exactly the depth it drew), and that is lit: the point is in shadow only when it is "
+                  "strictly farther, d - bias / (2r) > stored (>= shadows a tie)";
         } else if (fits(Lookup::kUnflipped) && close(mine, t_shadow(map, k, Lookup::kUnflipped), 1e-9)) {
             why = ": the map is read upside down: the texel's row is floor(y) of m3::to_screen, which flips NDC y "
                   "(y = (1 - y_ndc) / 2 * resolution, row 0 at the top, as the depth pass drew it)";
