@@ -37,6 +37,7 @@ using cp::vec3;
 bool close(double a, double b, double tol) { return std::isinf(a) || std::isinf(b) ? a == b : cp::close(a, b, tol); }
 
 std::string str(Vec2 p) { return "(" + num(p.x) + ", " + num(p.y) + ")"; }
+std::string str(Color c) { return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")"; }
 bool same3(Vec3 a, Vec3 b, double tol) { return close(a.x, b.x, tol) && close(a.y, b.y, tol) && close(a.z, b.z, tol); }
 Vec3 mul(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 
@@ -1501,6 +1502,56 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
     return it == themes.end() ? std::pair<std::string, std::string>{"pipeline", "TODO 9: follow draw_scene's steps"} : it->second;
 }
 
+// The exact ties of m5.fill_triangle: two ready-made triangles in a row with the same positions
+// and w (the same keys) in two plain colors. At pixels well inside them where the reference shows
+// the brighter copy, yours showing the other names the tie rule, and which copy it kept.
+void judge_depth_ties(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
+    const auto ref_it = ref.images.find("main");
+    if (ref_it == ref.images.end()) return;
+    for (std::size_t k = 0; k + 1 < panel.screen_tris.size(); ++k) {
+        const ScreenTri &a = panel.screen_tris[k], &b = panel.screen_tris[k + 1];
+        if (a.screen != b.screen || a.w != b.w || a.material.texture >= 0 || b.material.texture >= 0 ||
+            max_diff(a.material.color, b.material.color) <= 10) {
+            continue;
+        }
+        const double area = (a.screen[1].x - a.screen[0].x) * (a.screen[2].y - a.screen[0].y) -
+                            (a.screen[1].y - a.screen[0].y) * (a.screen[2].x - a.screen[0].x);
+        if (area == 0) continue;
+        long long inside = 0, other = 0;
+        bool last_kept = false;
+        for (int y = 0; y < panel.h; ++y) {
+            for (int x = 0; x < panel.w; ++x) {
+                const double px = x + 0.5, py = y + 0.5;
+                bool well_inside = true;
+                for (int i = 0; i < 3; ++i) {
+                    const Vec3 p = a.screen[std::size_t((i + 1) % 3)], q = a.screen[std::size_t((i + 2) % 3)];
+                    well_inside &= ((p.x - px) * (q.y - py) - (p.y - py) * (q.x - px)) / area >= 0.05;
+                }
+                if (!well_inside) continue;
+                const Color want = ref_it->second.at(panel.x0 + x, panel.y0 + y);
+                const bool a_wins = max_diff(want, a.material.color) <= 3, b_wins = max_diff(want, b.material.color) <= 3;
+                if (a_wins == b_wins) continue;
+                ++inside;
+                const Color loser = a_wins ? b.material.color : a.material.color;
+                if (max_diff(mine.at(panel.x0 + x, panel.y0 + y), loser) <= 3) {
+                    ++other;
+                    last_kept = a_wins;  // the loser is the copy drawn last
+                }
+            }
+        }
+        if (other < 5 || 2 * other < inside) continue;
+        c.add("rasterizer", "TODO 5: triangles " + std::to_string(k + 1) + " and " + std::to_string(k + 2) +
+                                " are the same triangle drawn twice (the same keys: an exact tie), in " +
+                                str(a.material.color) + " and then " + str(b.material.color) + "; at " +
+                                std::to_string(other) + " of " + std::to_string(inside) +
+                                " pixels inside them yours kept the copy drawn " + (last_kept ? "LAST" : "FIRST") +
+                                ", the darker one: a fragment whose key equals the stored one passes the pre-test, and "
+                                "m4::depth_passes then keeps the BRIGHTER color (larger red, then green, then blue), "
+                                "whichever is drawn last, so the picture does not depend on the drawing order");
+        ++k;
+    }
+}
+
 // The ready-made triangle 0 (kNearest) of m5.fill_triangle: at pixels well inside it where the
 // reference shows it, the texel of the perspective-correct uv and of the screen-space uv; more
 // pixels matching the second name the mistake.
@@ -1547,6 +1598,7 @@ void judge_screen_uv(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref
                                     " pixels inside the first triangle your texels are those of the SCREEN-space uv: weigh "
                                     "each vertex's uv by l_i / w_i and normalize (m4::perspective_weights)");
     }
+    judge_depth_ties(c, mine, ref, panel);
 }
 
 // fill_triangle (TODO 5) on m5.fill_triangle's own triangles, drawn by the render half of a

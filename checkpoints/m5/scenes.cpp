@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
 
 #include "harness/checkpoint.h"
 #include "harness/scene_builders.h"
@@ -317,9 +318,10 @@ std::vector<Scene> build() {
 
     // ---- the rasterizer alone ----
     {
-        Scene s = picture("m5.fill_triangle", "Two textured triangles straight through fill_triangle",
+        Scene s = picture("m5.fill_triangle", "Two textured triangles and two exact ties straight through fill_triangle",
                           "per covered pixel center: key and depth pre-test, perspective-correct uv (u/w, v/w, 1/w), "
-                          "lambda from uv_derivatives for a mip filter, sample(), to_color",
+                          "lambda from uv_derivatives for a mip filter, sample(), to_color; a tie of keys goes to "
+                          "m4::depth_passes (the brighter color stays, whichever is drawn last)",
                           {5, 2, 4}, 128, 96);
         Panel pn = panel(cam({0, 0, 5}), {}, {tex(Pattern::kChecker, 16, 16, 8), tex(Pattern::kFine, 64, 64)}, 0, 0, 128, 96);
         pn.textures[1].a = {240, 240, 250};
@@ -334,6 +336,21 @@ std::vector<Scene> build() {
                                   {1.5, 1, 6},
                                   {Vec2{0, 0}, Vec2{2, 0}, Vec2{1, 2}},
                                   unlit(1, Filter::kTrilinear)});
+        // Two exact ties, in front of everything: each small triangle drawn twice with the same
+        // positions and w (so the same keys) in two plain colors, the brighter one (larger red)
+        // first on the left and last on the right. m4::depth_passes keeps the brighter color
+        // whichever comes last; a fill_triangle that skips it keeps the last (or the first) copy.
+        const Color brighter{235, 190, 70}, darker{80, 200, 235};
+        const std::array<Vec3, 3> left = {Vec3{2.3, 66.4, -0.5}, Vec3{26.6, 93.2, -0.4}, Vec3{3.1, 93.6, -0.6}};
+        const std::array<Vec3, 3> right = {Vec3{104.2, 28.3, -0.5}, Vec3{125.7, 31.6, -0.6}, Vec3{117.4, 66.2, -0.4}};
+        for (const auto& [at, first, last] : {std::tuple{left, brighter, darker}, std::tuple{right, darker, brighter}}) {
+            for (const Color& color : {first, last}) {
+                MaterialSpec m;
+                m.color = color;
+                m.lit = false;
+                pn.screen_tris.push_back({at, {1, 1.5, 2}, {Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}}, m});
+            }
+        }
         s.panels.push_back(pn);
         add(s);
     }
