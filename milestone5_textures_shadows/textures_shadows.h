@@ -282,7 +282,8 @@ struct Material {
     Vec3 specular{0, 0, 0};         // levels; zero: no specular term is computed
     double shininess = 32;
     Texture* normal_map = nullptr;  // tangent-space normals (read with sample_bilinear on level 0,
-                                    // with the map's own wrap_u and wrap_v)
+                                    // with the map's own wrap_u and wrap_v; `filter` is the
+                                    // texture's only)
     bool lit = true;                // false: the base color as it is (the filter checkpoints)
 };
 

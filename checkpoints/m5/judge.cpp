@@ -1471,7 +1471,8 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
         {"m5.normal_map",
          {"normal map", "TODOs 5 and 9: draw_scene computes each mesh triangle's tangent_frame from its WORLD positions "
                         "and uv; fill_triangle perturbs the normalized normal with the normal map's bilinear level-0 "
-                        "texel, read with the normal map's own wrap modes (wrap_u, wrap_v)"}},
+                        "texel (sample_bilinear, whatever the material's filter), read with the normal map's own wrap "
+                        "modes (wrap_u, wrap_v)"}},
         {"m5.degenerate_uv",
          {"normal map", "TODOs 5 and 9: a triangle whose tangent frame is not valid keeps its normal"}},
         {"m5.shadow_box",

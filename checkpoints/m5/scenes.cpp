@@ -514,14 +514,17 @@ std::vector<Scene> build() {
     {
         Scene s = picture("m5.normal_map",
                           "Normal-mapped: a quad with sheared uv, one square but turned, a coarse prism with smooth "
-                          "normals, and a quad whose map clamps u and mirrors v (left to right)",
+                          "normals, a quad whose map clamps u and mirrors v, and a textured quad (nearest) on a coarse "
+                          "map (left to right)",
                           "T and B from the WORLD positions and uv; T' = T made orthogonal to N, B' = cross(N, T') (not "
                           "B itself: with sheared uv it is not perpendicular to T); the texel as 2 t / 255 - 1; N "
                           "normalized before perturb_normal (inside a triangle of the prism the interpolated normal is "
-                          "shorter than 1); the map read with its own wrap modes (on the right, uv outside [0, 1]: "
+                          "shorter than 1); the map read with its own wrap modes (on the fourth quad, uv outside [0, 1]: "
                           "clamp to edge in u stretches the flat edge texels; the bumps lie in the map's top half, and "
-                          "mirrored repeat in v reads that half again above the map and the flat bottom half below it)",
-                          {7, 6, 5, 9}, 512, 96);
+                          "mirrored repeat in v reads that half again above the map and the flat bottom half below it); "
+                          "the map read with sample_bilinear on level 0 whatever the material's filter (on the far right "
+                          "the texture is nearest, and the 8x8 map, magnified, stays smooth)",
+                          {7, 6, 5, 9}, 640, 96);
         for (int p = 0; p < 2; ++p) {
             Mesh q = quad({-1.7, -1.2, 0}, {1.7, -1.2, 0}, {1.7, 1.2, 0}, {-1.7, 1.2, 0});
             // uv at the corners: v grows down the quad; the sheared one slides u by 0.9 per v.
@@ -569,6 +572,23 @@ std::vector<Scene> build() {
         Panel pw = panel(cam({0.02, 0.03, 4.2}), {item(wq, wm)}, {half_bumps}, 384, 0, 128, 96);
         pw.lights = {sun({-0.9, -0.25, -0.45}, {0.8, 0.8, 0.8})};
         s.panels.push_back(pw);
+        // A textured material whose filter is nearest, on a coarse 8x8 map magnified about 9
+        // times: the normal map is read with sample_bilinear on level 0 whatever the material's
+        // filter, so the bump is smooth; read through sample() with the material's filter, it
+        // breaks into flat facets, one per texel. The texture's two colors are close (no texel
+        // edge is a color edge).
+        MaterialSpec nm = plain({200, 180, 160}, {140, 140, 140}, 24);
+        nm.texture = 0;
+        nm.filter = Filter::kNearest;
+        nm.normal_map = 1;
+        TextureSpec base = tex(Pattern::kChecker, 16, 16, 4);
+        base.a = {205, 185, 165};
+        base.b = {195, 178, 156};
+        TextureSpec coarse = tex(Pattern::kBumps, 8, 8, 1);
+        coarse.bump_height = 0.25;
+        Panel pc = panel(cam({0.02, 0.03, 4.2}), {item(facing_quad(1.4, 0, {0, 0}, {1, 1}), nm)}, {base, coarse}, 512, 0, 128, 96);
+        pc.lights = {sun({-0.6, -0.5, -0.8}, {0.8, 0.8, 0.8})};
+        s.panels.push_back(pc);
         s.demo = true;
         add(s);
     }
