@@ -1553,6 +1553,67 @@ void judge_depth_ties(Ctx& c, const raster::Image& mine, const cp::Artifacts& re
     }
 }
 
+// The ready-made triangles of m5.fill_triangle with a mip filter: at pixels well inside one where
+// lambda taken at the pixel's corner (x, y) gives another color than at its center (x + 0.5,
+// y + 0.5) and the reference shows the center's, more of yours matching the corner's names the
+// mistake. The derivatives come from the corners snapped to 1/16 pixel, as fill_triangle's do.
+void judge_lod_center(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
+    const auto ref_it = ref.images.find("main");
+    if (ref_it == ref.images.end()) return;
+    long long telling = 0, corner_like = 0, center_like = 0;
+    for (const ScreenTri& t : panel.screen_tris) {
+        const MaterialSpec& m = t.material;
+        if (m.texture < 0 || std::size_t(m.texture) >= panel.textures.size() ||
+            (m.filter != Filter::kTrilinear && m.filter != Filter::kNearestMip)) {
+            continue;
+        }
+        const TextureSpec& spec = panel.textures[std::size_t(m.texture)];
+        const std::vector<LevelData> pyr = t_pyramid(level_of(spec));
+        LodCase k{t.screen, t.w, t.uv, 0, 0, pyr[0].width, pyr[0].height};
+        for (Vec3& v : k.screen) v = {std::round(v.x * 16) / 16, std::round(v.y * 16) / 16, v.z};
+        const auto& s = k.screen;
+        const double area = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[1].y - s[0].y) * (s[2].x - s[0].x);
+        if (area == 0) continue;
+        for (int y = 0; y < panel.h; ++y) {
+            for (int x = 0; x < panel.w; ++x) {
+                const double px = x + 0.5, py = y + 0.5;
+                double l[3], q[3], sum = 0;
+                for (int i = 0; i < 3; ++i) {
+                    const Vec3 a = s[std::size_t((i + 1) % 3)], b = s[std::size_t((i + 2) % 3)];
+                    l[i] = ((a.x - px) * (b.y - py) - (a.y - py) * (b.x - px)) / area;
+                }
+                if (l[0] < 0.05 || l[1] < 0.05 || l[2] < 0.05) continue;
+                for (int i = 0; i < 3; ++i) sum += q[i] = l[i] / k.w[std::size_t(i)];
+                Vec2 uv{};
+                for (int i = 0; i < 3; ++i) uv = uv + k.uv[std::size_t(i)] * (q[i] / sum);
+                auto color_with_lambda_at = [&](double lx, double ly) {
+                    k.x = lx;
+                    k.y = ly;
+                    const Derivs d = t_derivatives(k);
+                    const double lambda = t_lambda(d.du_dx, d.dv_dx, d.du_dy, d.dv_dy, k.width, k.height);
+                    return to_color(t_sample(pyr, uv, lambda, m.filter, spec.wrap_u, spec.wrap_v));
+                };
+                const Color at_center = color_with_lambda_at(px, py), at_corner = color_with_lambda_at(x, y);
+                if (max_diff(at_center, at_corner) <= 10 ||
+                    max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), at_center) > 3) {
+                    continue;
+                }
+                ++telling;
+                const Color mc = mine.at(panel.x0 + x, panel.y0 + y);
+                corner_like += max_diff(mc, at_corner) <= 3;
+                center_like += max_diff(mc, at_center) <= 3;
+            }
+        }
+    }
+    if (corner_like >= 10 && corner_like > center_like) {
+        c.add("rasterizer", "TODO 5: at " + std::to_string(corner_like) + " of " + std::to_string(telling) +
+                                " pixels of the triangles with a mip filter where the level changes between a pixel's "
+                                "corner and its center, your colors are those of lambda taken at the pixel's CORNER "
+                                "(x, y): take uv_derivatives at its center (x + 0.5, y + 0.5), where the pixel is "
+                                "sampled");
+    }
+}
+
 // The ready-made triangle 0 (kNearest) of m5.fill_triangle: at pixels well inside it where the
 // reference shows it, the texel of the perspective-correct uv and of the screen-space uv; more
 // pixels matching the second name the mistake.
@@ -1600,6 +1661,7 @@ void judge_screen_uv(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref
                                     "each vertex's uv by l_i / w_i and normalize (m4::perspective_weights)");
     }
     judge_depth_ties(c, mine, ref, panel);
+    judge_lod_center(c, mine, ref, panel);
 }
 
 // fill_triangle (TODO 5) on m5.fill_triangle's own triangles, drawn by the render half of a

@@ -318,12 +318,14 @@ std::vector<Scene> build() {
 
     // ---- the rasterizer alone ----
     {
-        Scene s = picture("m5.fill_triangle", "Two textured triangles and two exact ties straight through fill_triangle",
+        constexpr double kRecedeUv = 1.0;
+        Scene s = picture("m5.fill_triangle", "Three textured triangles and two exact ties straight through fill_triangle",
                           "per covered pixel center: key and depth pre-test, perspective-correct uv (u/w, v/w, 1/w), "
-                          "lambda from uv_derivatives for a mip filter, sample(), to_color; a tie of keys goes to "
+                          "lambda from uv_derivatives at the pixel center (x + 0.5, y + 0.5) for a mip filter, sample(), "
+                          "to_color; a tie of keys goes to "
                           "m4::depth_passes (the brighter color stays, whichever is drawn last)",
-                          {5, 2, 4}, 128, 96);
-        Panel pn = panel(cam({0, 0, 5}), {}, {tex(Pattern::kChecker, 16, 16, 8), tex(Pattern::kFine, 64, 64)}, 0, 0, 128, 96);
+                          {5, 2, 4}, 192, 96);
+        Panel pn = panel(cam({0, 0, 5}), {}, {tex(Pattern::kChecker, 16, 16, 8), tex(Pattern::kFine, 64, 64), tex(Pattern::kNoise, 64, 64)}, 0, 0, 192, 96);
         pn.textures[1].a = {240, 240, 250};
         pn.textures[1].b = {40, 60, 140};
         // Counter-clockwise, w from 1 to 5: the checker squares bend toward the near corner.
@@ -336,6 +338,14 @@ std::vector<Scene> build() {
                                   {1.5, 1, 6},
                                   {Vec2{0, 0}, Vec2{2, 0}, Vec2{1, 2}},
                                   unlit(1, Filter::kTrilinear)});
+        // On the right, steeply receding (w from 1 at the bottom to 60 along the top edge), noise
+        // with nearest-mip: near the top lambda grows by about half a level per pixel, so along
+        // each row where it crosses 0.5, 1.5, 2.5, ... lambda taken at the pixel's corner instead
+        // of its center reads the other level (noise levels differ everywhere).
+        pn.screen_tris.push_back({{Vec3{160.7, 92.6, 0.3}, Vec3{189.4, 4.2, 0.9}, Vec3{130.3, 3.4, 0.9}},
+                                  {1, 60, 60},
+                                  {Vec2{kRecedeUv / 2, 2 * kRecedeUv}, Vec2{kRecedeUv, 0}, Vec2{0, 0}},
+                                  unlit(2, Filter::kNearestMip)});
         // Two exact ties, in front of everything: each small triangle drawn twice with the same
         // positions and w (so the same keys) in two plain colors, the brighter one (larger red)
         // first on the left and last on the right. m4::depth_passes keeps the brighter color
