@@ -349,15 +349,18 @@ enum class Lookup {
     kRawDirection,  // c = dot(n, -direction) with the direction as passed, not normalized
     kUnflipped,   // the row from NDC y as it is, without to_screen's flip
     kTieShadowed, // d - bias / (2r) >= stored: a tie shadowed
+    kAlongRays,   // c = dot(n, +normalize(direction)): L the way the rays travel, so c <= 0 and the cap
 };
 
 // The bias of a shadow case in world units: constant + slope * min(tan(theta), 10), with
 // c = cos(theta) from the light's direction normalized; or as `mode`'s mistake takes it.
 double t_bias(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::kRule) {
     const Vec3 direction = map.direction * c.direction_scale;
-    const double cos_t =
-        raster::dot(c.n, mode == Lookup::kRawDirection ? -direction : -unit_or_zero(direction));
-    const double tan_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t)) / cos_t;
+    const double cos_t = raster::dot(c.n, mode == Lookup::kRawDirection ? -direction
+                                          : mode == Lookup::kAlongRays  ? unit_or_zero(direction)
+                                                                        : -unit_or_zero(direction));
+    // c <= 0 (no light arrives; the header asks only for c > 0) takes the cap, as the reference does.
+    const double tan_t = cos_t > 0 ? std::sqrt(std::max(0.0, 1 - cos_t * cos_t)) / cos_t : 10.0;
     return c.constant_bias + c.slope_bias * (mode == Lookup::kUncapped ? tan_t : std::min(tan_t, 10.0));
 }
 
@@ -1018,6 +1021,13 @@ void judge_shadow(Ctx& c) {
                   " times as long as a unit vector, and c = dot(n, -direction) was taken from it as it is: normalize "
                   "the direction first (c = " + num(round4(raster::dot(k.n, -unit_or_zero(map.direction)))) +
                   " here, tan(theta) = " + num(round4((bias - k.constant_bias) / k.slope_bias)) + ")";
+        } else if (fits(Lookup::kAlongRays) && close(mine, t_shadow(map, k, Lookup::kAlongRays), 1e-9)) {
+            topic = "shadow bias";
+            why = ": every case here takes the capped bias, constant + slope * 10 (" +
+                  num(round4(t_bias(map, k, Lookup::kAlongRays))) + " world units here), as if no surface faced the "
+                  "light: c = dot(n, L) with L = -normalize(direction), the way TOWARD the light (a light's direction "
+                  "is the way its rays travel); with +direction a surface facing the light gets c <= 0 (here c = " +
+                  num(round4(raster::dot(k.n, -unit_or_zero(map.direction)))) + ")";
         } else if (fits(Lookup::kUncapped) && close(mine, t_shadow(map, k, Lookup::kUncapped), 1e-9)) {
             topic = "shadow bias";
             why = ": tan(theta) = " + num(round4((t_bias(map, k, Lookup::kUncapped) - k.constant_bias) / k.slope_bias)) +
