@@ -350,6 +350,7 @@ enum class Lookup {
     kUnflipped,   // the row from NDC y as it is, without to_screen's flip
     kTieShadowed, // d - bias / (2r) >= stored: a tie shadowed
     kAlongRays,   // c = dot(n, +normalize(direction)): L the way the rays travel, so c <= 0 and the cap
+    kNdcDepth,    // z_ndc - bias / (2r): the point's z_ndc compared as it is, not its depth (z_ndc + 1) / 2
 };
 
 // The bias of a shadow case in world units: constant + slope * min(tan(theta), 10), with
@@ -377,7 +378,7 @@ double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::k
     const double res = map.resolution;
     const double x = (clip.x / clip.w + 1) / 2 * res, z = clip.z / clip.w;
     const double y = mode == Lookup::kUnflipped ? (clip.y / clip.w + 1) / 2 * res : (1 - clip.y / clip.w) / 2 * res;
-    const double d = (z + 1) / 2;
+    const double d = mode == Lookup::kNdcDepth ? z : (z + 1) / 2;
     const double bias = t_bias(map, c, mode);
     const double test = mode == Lookup::kBiasAdded   ? d + bias / (2 * map.radius)
                         : mode == Lookup::kWorldBias ? d - bias
@@ -1028,6 +1029,12 @@ void judge_shadow(Ctx& c) {
                   "light: c = dot(n, L) with L = -normalize(direction), the way TOWARD the light (a light's direction "
                   "is the way its rays travel); with +direction a surface facing the light gets c <= 0 (here c = " +
                   num(round4(raster::dot(k.n, -unit_or_zero(map.direction)))) + ")";
+        } else if (fits(Lookup::kNdcDepth) && close(mine, t_shadow(map, k, Lookup::kNdcDepth), 1e-9)) {
+            topic = "shadow";  // PCF cases too: the depth is wrong before any texel is counted
+            why = ": the point's depth was taken as z_ndc itself (in [-1, 1]), which puts it nearer the light than "
+                  "every stored depth: the stored keys are window depths d = (z_ndc + 1) / 2 in [0, 1], as "
+                  "m4::depth_key made them, so compare d - bias / (2r) with them (here d = " +
+                  num(round4(t_shadow_depth(map, k) + bias / (2 * map.radius))) + ")";
         } else if (fits(Lookup::kUncapped) && close(mine, t_shadow(map, k, Lookup::kUncapped), 1e-9)) {
             topic = "shadow bias";
             why = ": tan(theta) = " + num(round4((t_bias(map, k, Lookup::kUncapped) - k.constant_bias) / k.slope_bias)) +
