@@ -221,16 +221,17 @@ int cmd_judge(const std::vector<std::string>& args) {
         if (early.empty()) early.push_back(cp::unreadable_artifacts_finding(e.what()));
         student = cp::Artifacts{};
     }
-    cp::Verdict v = cp::judge_checkpoint(s, id, student, reference, expected);
     // Graded: the verdict on what the trusted side can check; what only the counts said is advice.
+    // (When the render itself failed, that is the verdict and the whole one is kept below.)
+    cp::GradedVerdict judged = cp::judge_for_grading(s, id, student, reference, expected);
+    cp::Verdict v = std::move(judged.whole);
     std::vector<std::string> advice;
-    if (early.empty() && v.record.status != "pass") {
-        cp::Verdict trusted = cp::judge_checkpoint(s, id, cp::verifiable_part(student, reference), reference, expected);
+    if (early.empty() && judged.graded) {
+        const auto& kept = judged.graded->record.findings;
         for (const std::string& f : v.record.findings) {
-            const auto& kept = trusted.record.findings;
             if (std::find(kept.begin(), kept.end(), f) == kept.end()) advice.push_back(f);
         }
-        v = std::move(trusted);
+        v = std::move(*judged.graded);
     }
     if (!early.empty()) {
         // The render itself failed: that is the verdict, whatever its output looks like.

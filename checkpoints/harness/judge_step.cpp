@@ -414,6 +414,15 @@ Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifa
     return v;
 }
 
+GradedVerdict judge_for_grading(const Suite& suite, const std::string& id, const Artifacts& student,
+                                const Artifacts& reference, const Expected& expected) {
+    GradedVerdict g{judge_once(suite, id, student, reference, expected, true), std::nullopt};
+    if (g.whole.findings.empty()) return g;
+    g.graded = judge_once(suite, id, verifiable_part(student, reference), reference, expected, true);
+    if (!student.stopped) g.whole.record.counts_only = g.graded->findings.empty();
+    return g;
+}
+
 std::string picture_caption(const std::string& milestone, const std::string& name) {
     if (name == "diff") return std::string("diff (") + kDiffLegend + ")";
     if (name == "fill_triangle") {

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -50,6 +51,16 @@ Expected expected_image(const Suite& suite, const std::string& id, std::uint64_t
 // itself has record.counts_only set (the judge runs again on verifiable_part to know).
 Verdict judge_checkpoint(const Suite& suite, const std::string& id, const Artifacts& student,
                          const Artifacts& reference, const Expected& expected);
+
+// The grader's two verdicts from one call: `whole` is judge_checkpoint's; `graded` is the verdict,
+// with its diagnosis, on verifiable_part, judged only when `whole` fails (when it passes there is
+// nothing the counts alone could have failed, and `graded` is empty: grade `whole`).
+struct GradedVerdict {
+    Verdict whole;
+    std::optional<Verdict> graded;
+};
+GradedVerdict judge_for_grading(const Suite& suite, const std::string& id, const Artifacts& student,
+                                const Artifacts& reference, const Expected& expected);
 
 // What of the student's artifacts the trusted side can check (tools/grading/README.md, "What the
 // render reports about itself"): the pictures and the answers, not the numbers that only the
