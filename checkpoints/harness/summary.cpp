@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -107,10 +108,28 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
     const bool any_measure = std::any_of(records.begin(), records.end(),
                                          [](const cp::Record& r) { return !r.measures.empty(); });
     if (any_measure) {
-        html << "<p>Each checkpoint's findings and pictures follow; the <a href=\"#measures\">measured error "
-                "against run time</a> is at the end of the page.</p>\n";
+        html << "<p>Each checkpoint's findings and pictures follow, the failing ones first; the <a href=\"#measures\">"
+                "measured error against run time</a> is at the end of the page.</p>\n";
     }
+    // The sections of failing checkpoints first (in the table's order), then the passing ones:
+    // the first screen below the table is what needs work.
+    std::vector<const cp::Record*> sections;
     for (const cp::Record& r : records) {
+        if (r.status != "pass") sections.push_back(&r);
+    }
+    const std::size_t failing = sections.size();
+    for (const cp::Record& r : records) {
+        if (r.status == "pass") sections.push_back(&r);
+    }
+    std::set<std::string> passed;
+    for (const cp::Record& r : records) {
+        if (r.status == "pass") passed.insert(r.id);
+    }
+    for (std::size_t i = 0; i < sections.size(); ++i) {
+        const cp::Record& r = *sections[i];
+        if (i == failing && failing > 0) {
+            html << "<p class=\"pass\" id=\"passing\"><b>Passing checkpoints</b> (the failing ones are above)</p>\n";
+        }
         html << "<h2 id=\"" << html_escape(r.id) << "\">" << html_escape(r.id) << ": " << html_escape(r.title)
              << "</h2>\n<p class=\"" << html_escape(r.status) << "\">" << html_escape(r.status) << " "
              << html_escape(r.concepts) << "</p>\n";
@@ -140,9 +159,12 @@ void write_html(const std::vector<cp::Record>& records, const std::string& path)
         std::error_code ec;
         for (const auto& entry : std::filesystem::directory_iterator(r.output_dir, ec)) {
             const std::string stem = entry.path().stem().string();
-            // The fill_triangle picture helps to tell a wrong fill_triangle from a wrong caller: of
-            // no use where the scene passes.
-            const bool unhelpful = stem == "fill_triangle" && r.status == "pass";
+            // A picture of another checkpoint's scene drawn by this run's fill_triangle alone
+            // ("fill_triangle", milestone 4's "shared_edges") tells a wrong fill_triangle from a
+            // wrong caller: of no use where this scene passes, or where that checkpoint passed in
+            // this run (then fill_triangle draws it right, and the picture shows nothing new).
+            const bool other_scene = stem == "fill_triangle" || stem == "shared_edges";
+            const bool unhelpful = other_scene && (r.status == "pass" || passed.count(r.milestone + "." + stem) > 0);
             if (entry.path().extension() == ".png" && stem != "actual" && stem != "expected" && stem != "diff" &&
                 !unhelpful) {
                 others.push_back(stem);
