@@ -438,7 +438,7 @@ int cmd_report(const std::vector<std::string>& args) {
     fs::create_directories(out);
     json tests = json::array();
     double score = 0, total = 0;
-    std::ostringstream html, rows, sections;
+    std::ostringstream html, rows, sections, passing;
     std::map<std::string, std::pair<double, double>> per_milestone;  // earned, max (visible only)
     int hidden_count = 0;
     for (const auto& [m, r] : rubric) {
@@ -504,14 +504,16 @@ int cmd_report(const std::vector<std::string>& args) {
                          : "")
                  << "</td></tr>\n";
             rows.unsetf(std::ios::fixed);
-            sections << "<section id=\"" << html_escape(m + "-" + cname) << "\"><h3>" << html_escape(m + " " + cname)
+            // Sections of checkpoints that lost points first, then the full-marks ones.
+            std::ostringstream& sec = got >= max ? passing : sections;
+            sec << "<section id=\"" << html_escape(m + "-" + cname) << "\"><h3>" << html_escape(m + " " + cname)
                      << (hidden ? " (hidden)" : "") << ": " << fmt_points(got) << " / " << fmt_points(max)
                      << "</h3><pre>" << html_escape(output) << "</pre>\n";
             // The student's main picture first, then its other pictures, the expected image and
             // the difference. A checkpoint of numbers has no picture of its own: its blank canvas,
             // expected image and diff are left out, and a note says why.
             const bool numbers_only = v.value("numbers_only", false);
-            if (numbers_only) sections << cp::kNumbersOnlyNote;
+            if (numbers_only) sec << cp::kNumbersOnlyNote;
             const auto listed = v.value("pictures", std::vector<std::string>{});
             std::vector<std::string> pics;
             auto take = [&](auto keep) {
@@ -520,10 +522,23 @@ int cmd_report(const std::vector<std::string>& args) {
                 }
             };
             if (!numbers_only) take([](const std::string& p) { return p == "actual"; });
-            // The fill_triangle picture tells a wrong fill_triangle from a wrong caller: of no use
-            // where the scene passes.
+            // A picture of another checkpoint's scene drawn by the student's fill_triangle alone
+            // ("fill_triangle", milestone 4's "shared_edges") tells a wrong fill_triangle from a
+            // wrong caller: of no use where this scene passes or where that checkpoint passed.
+            auto other_scene_passed = [&](const std::string& p) {
+                json o;
+                try {
+                    const fs::path of = mdir / "verdicts" / p / "verdict.json";
+                    if (fs::is_regular_file(of)) o = json::parse(read_text(of));
+                } catch (const json::exception&) {
+                    return false;
+                }
+                return o.is_object() && o.value("status", std::string()) == "pass";
+            };
             take([&](const std::string& p) {
-                return p != "actual" && p != "expected" && p != "diff" && !(status == "pass" && p == "fill_triangle");
+                const bool other_scene = p == "fill_triangle" || p == "shared_edges";
+                return p != "actual" && p != "expected" && p != "diff" &&
+                       !(other_scene && (status == "pass" || other_scene_passed(p)));
             });
             if (!numbers_only) {
                 take([](const std::string& p) { return p == "expected"; });
@@ -540,11 +555,11 @@ int cmd_report(const std::vector<std::string>& args) {
                 const int width = pic == "error_vs_time"
                                       ? (natural > 0 ? natural : 480)
                                       : cp::shown_width(natural, 192, pic == "diff" ? 2 : 1, cp::png_height(png), 128);
-                sections << "<figure style=\"width:" << width + 2 << "px\"><img alt=\"" << html_escape(pic)
+                sec << "<figure style=\"width:" << width + 2 << "px\"><img alt=\"" << html_escape(pic)
                          << "\" width=\"" << width << "\" src=\"data:image/png;base64," << base64(png)
                          << "\"><figcaption>" << html_escape(cp::picture_caption(m, pic)) << "</figcaption></figure>";
             }
-            sections << "</section>\n";
+            sec << "</section>\n";
         }
         tests.push_back({{"name", m + " compiles"},
                          {"score", 0},
@@ -578,7 +593,11 @@ int cmd_report(const std::vector<std::string>& args) {
          << "</title>" << kStyle << "</head><body><h1>Grade: " << html_escape(name) << "</h1><p>"
          << html_escape(summary.str()) << "</p><table><tr><th>checkpoint</th><th>status</th><th>points</th>"
          << "<th>concepts</th><th>your ms</th><th>reference ms</th><th>pixels differ</th></tr>\n"
-         << rows.str() << "</table>\n" << sections.str() << cp::kPictureLoadMarker << "</body></html>\n";
+         << rows.str() << "</table>\n" << sections.str()
+         << (!sections.str().empty() && !passing.str().empty()
+                 ? "<p id=\"full-marks\"><b>Checkpoints with full marks</b> (those that lost points are above)</p>\n"
+                 : "")
+         << passing.str() << cp::kPictureLoadMarker << "</body></html>\n";
     write_file_checked(out / "report.html", html.str());
     std::cout << summary.str() << "\n";
     return 0;
