@@ -38,6 +38,26 @@ bool same3(raster::Vec3 a, raster::Vec3 b, double tol) {
     return close(a.x, b.x, tol) && close(a.y, b.y, tol) && close(a.z, b.z, tol);
 }
 
+std::string str(raster::Color c) {
+    return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")";
+}
+
+int max_diff(raster::Color a, raster::Color b) {
+    return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+}
+
+bool PixelVote::cast(raster::Color got, raster::Color right, raster::Color wrong) {
+    if (max_diff(right, wrong) <= apart_) return false;
+    ++telling_;
+    mistake_like_ += max_diff(got, wrong) <= 3;
+    rule_like_ += max_diff(got, right) <= 3;
+    return true;
+}
+
+std::string PixelVote::tally() const {
+    return "at " + std::to_string(mistake_like_) + " of " + std::to_string(telling_) + " pixels";
+}
+
 void add_finding(Judgement& j, const std::string& topic, const std::string& msg) {
     std::string todo, text = msg;
     const auto colon = msg.find(": ");

@@ -32,6 +32,29 @@ bool close(double a, double b, double tol);
 raster::Vec3 vec3(const Values& v, const std::string& key);
 std::string str(raster::Vec3 p);
 bool same3(raster::Vec3 a, raster::Vec3 b, double tol);
+// A color as findings print it: "(r, g, b)".
+std::string str(raster::Color c);
+// The largest difference of a channel between two colors, in levels.
+int max_diff(raster::Color a, raster::Color b);
+
+// A vote between the rule and one known mistake, pixel by pixel, where the two predict colors
+// more than `apart` levels apart (a "telling" pixel; the caller leaves out those where the
+// reference does not show the rule's color): the student's pixel is counted for each it
+// matches within 3 levels. The mistake is named when at least 10 telling pixels match it and
+// more match it than the rule, so that a picture wrong in some other way names nothing.
+class PixelVote {
+public:
+    explicit PixelVote(int apart = 10) : apart_(apart) {}
+    // Counts the pixel when the predictions tell apart; returns whether they did.
+    bool cast(raster::Color got, raster::Color right, raster::Color wrong);
+    bool names_mistake() const { return mistake_like_ >= 10 && mistake_like_ > rule_like_; }
+    // "at <mistake-like> of <telling> pixels", for the finding's text.
+    std::string tally() const;
+
+private:
+    int apart_;
+    long long telling_ = 0, mistake_like_ = 0, rule_like_ = 0;
+};
 
 // Adds a finding unless one with this topic and text is there: "TODO 5: message" (the label
 // before the first ": ", when it starts with "TODO" and is short) puts "TODO 5" into its todo.

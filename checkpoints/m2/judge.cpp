@@ -26,6 +26,7 @@ namespace m2cp {
 
 namespace {
 
+using cp::str;
 using raster::Image;
 using raster::Mask;
 
@@ -47,10 +48,6 @@ std::string str(Vec2 p) {
     std::ostringstream s;
     s << "(" << p.x << ", " << p.y << ")";
     return s.str();
-}
-
-std::string str(Color c) {
-    return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")";
 }
 
 // A triangle as the judge sees it.

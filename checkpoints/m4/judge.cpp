@@ -41,7 +41,6 @@ Color color3(const Values& v, const std::string& key) {
     };
     return {ch(".r"), ch(".g"), ch(".b")};
 }
-std::string str(Color c) { return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")"; }
 
 struct Ctx {
     const Scene& s;

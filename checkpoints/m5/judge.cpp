@@ -27,6 +27,7 @@ namespace m5cp {
 namespace {
 
 using cp::get;
+using cp::max_diff;
 using cp::num;
 using cp::plural;
 using cp::str;
@@ -37,7 +38,6 @@ using cp::vec3;
 bool close(double a, double b, double tol) { return std::isinf(a) || std::isinf(b) ? a == b : cp::close(a, b, tol); }
 
 std::string str(Vec2 p) { return "(" + num(p.x) + ", " + num(p.y) + ")"; }
-std::string str(Color c) { return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")"; }
 bool same3(Vec3 a, Vec3 b, double tol) { return close(a.x, b.x, tol) && close(a.y, b.y, tol) && close(a.z, b.z, tol); }
 Vec3 mul(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 
@@ -51,8 +51,6 @@ Color to_color(Vec3 v) {
     auto ch = [](double x) { return static_cast<std::uint8_t>(std::isnan(x) ? 0 : std::lround(std::clamp(x, 0.0, 255.0))); };
     return {ch(v.x), ch(v.y), ch(v.z)};
 }
-
-int max_diff(Color a, Color b) { return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)}); }
 
 const char* wrap_name(Wrap w) {
     switch (w) {
