@@ -342,7 +342,8 @@ struct FillState {
 // perspective-correct weights (m4::perspective_weights) interpolate uv, normal and world
 // position; the base color is the material's color or sample() of its texture (with lambda from
 // uv_derivatives at the pixel center, from the vertex positions the screen weights come from
-// (snapped; advice: unsnapped ones move lambda by far less than a tolerance), and
+// (snapped as the reference, or unsnapped: where that moves lambda across kNearestMip's
+// rounding boundary k + 0.5 either level is tolerated, see README.md section 5), and
 // level_of_detail on level 0's size, for mip filters only); unlit materials stop
 // there; lit ones normalize the normal, perturb it by the normal map if any (reading the map
 // where state.tangent is not valid is free, see Only what a scene needs above), and add ambient

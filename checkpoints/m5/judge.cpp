@@ -1109,10 +1109,9 @@ void judge_group(Group g, Ctx& c) {
 // ---- pictures ----
 
 // Pixels next to an edge or a color boundary of the expected image (a neighbour differs by more
-// than 16 levels) may differ, up to a fifth of them; elsewhere 3 levels (rounding).
-cp::Tolerance tolerance_for(const raster::Image& expected) {
-    return cp::edge_tolerance(expected, "pixels next to an edge, a texel or shadow boundary or a change of mip level depend on rounding");
-}
+// than 16 levels) may differ, up to a fifth of them; elsewhere 3 levels (rounding). So may the
+// pixels of scene s where kNearestMip's choice of level is ambiguous (mip_ambiguous below).
+cp::Tolerance tolerance_for(const Scene& s, const raster::Image& expected);
 
 LevelData level_of(const TextureSpec& spec) {
     const raster::Image img = texture_image(spec);
@@ -1210,6 +1209,175 @@ const TextureSpec* first_texture(const Panel& p) {
     if (p.items.empty()) return nullptr;
     const int t = p.items[0].material.texture;
     return t >= 0 && std::size_t(t) < p.textures.size() ? &p.textures[std::size_t(t)] : nullptr;
+}
+
+// ---- where kNearestMip's level is ambiguous ----
+//
+// The header lets lambda come from the snapped or the unsnapped screen positions, in double or
+// float, with or without FMA. kNearestMip reads level floor(lambda + 0.5), so where lambda lies
+// within reach of a boundary k + 0.5 those choices read different levels, and every one of them
+// is right. The judge recomputes lambda at each pixel center from the scene (the triangle the
+// pixel shows) and its reach: how far lambda moves when each vertex coordinate moves by one
+// step of the snapping grid (a bound on snapped against unsnapped, which differ by half a
+// step at most), plus 1e-3 for float arithmetic. Such a pixel joins the lenient mask.
+
+// A triangle on the screen: positions (pixels), clip w and uv.
+struct ScreenTriangle {
+    std::array<Vec2, 3> p;
+    std::array<double, 3> w;
+    std::array<Vec2, 3> uv;
+};
+
+// lambda at (x, y) by the lesson's rule (the uv planes over 1/w, the quotient rule, rho in
+// texels of a tw x th base level); NaN where the triangle is degenerate.
+double lambda_at(const ScreenTriangle& t, double x, double y, int tw, int th) {
+    const double area2 = (t.p[1].x - t.p[0].x) * (t.p[2].y - t.p[0].y) - (t.p[1].y - t.p[0].y) * (t.p[2].x - t.p[0].x);
+    if (area2 == 0 || !std::isfinite(area2)) return std::numeric_limits<double>::quiet_NaN();
+    double a = 0, ax = 0, ay = 0, c = 0, cx = 0, cy = 0, b = 0, bx = 0, by = 0;  // u/w, v/w, 1/w
+    for (int i = 0; i < 3; ++i) {
+        const Vec2 pj = t.p[(i + 1) % 3], pk = t.p[(i + 2) % 3];
+        const double lx = -(pk.y - pj.y) / area2, ly = (pk.x - pj.x) / area2;
+        const double l = ((pk.x - pj.x) * (y - pj.y) - (pk.y - pj.y) * (x - pj.x)) / area2;
+        const double q = 1 / t.w[i], u = (t.uv[i].x - t.uv[0].x) * q, v = (t.uv[i].y - t.uv[0].y) * q;
+        a += l * u, ax += lx * u, ay += ly * u;
+        c += l * v, cx += lx * v, cy += ly * v;
+        b += l * q, bx += lx * q, by += ly * q;
+    }
+    if (!(b != 0) || !std::isfinite(b)) return std::numeric_limits<double>::quiet_NaN();
+    const double ib2 = 1 / (b * b);
+    const double ux = tw * (ax * b - a * bx) * ib2, vx = th * (cx * b - c * bx) * ib2;
+    const double uy = tw * (ay * b - a * by) * ib2, vy = th * (cy * b - c * by) * ib2;
+    return 0.5 * std::log2(std::max(ux * ux + vx * vx, uy * uy + vy * vy));
+}
+
+// Whether kNearestMip may read either of two levels at (x, y) of triangle t, for a base level
+// tw x th.
+bool nearest_mip_ambiguous(const ScreenTriangle& t, double x, double y, int tw, int th) {
+    int last = 0;
+    for (int n = std::max(tw, th); n > 1; n /= 2) ++last;
+    if (last == 0) return false;
+    const double lambda = lambda_at(t, x, y, tw, th);
+    if (std::isnan(lambda)) return false;
+    double reach = 1e-3;
+    const double step = 1.0 / 16;  // milestone 2's snapping grid (m2::kSubpixelSteps)
+    for (int i = 0; i < 3; ++i) {
+        for (int axis = 0; axis < 2; ++axis) {
+            ScreenTriangle moved = t;
+            (axis == 0 ? moved.p[std::size_t(i)].x : moved.p[std::size_t(i)].y) += step;
+            const double l = lambda_at(moved, x, y, tw, th);
+            reach += std::isnan(l) ? std::numeric_limits<double>::infinity() : std::abs(l - lambda);
+        }
+    }
+    // Boundaries between levels that can be read: 0.5, 1.5, ..., last - 0.5 (lambda is clamped
+    // to the last level, and at or below 0.5 level 0 is read either way).
+    const double k = std::floor(lambda);
+    for (double boundary : {k - 0.5, k + 0.5, k + 1.5}) {
+        if (boundary >= 0.5 && boundary <= last - 0.5 && std::abs(lambda - boundary) <= reach) return true;
+    }
+    return false;
+}
+
+// The base level of a nearest-mip material's texture, or nullptr for any other material.
+const TextureSpec* nearest_mip_texture(const Panel& p, const MaterialSpec& m) {
+    if (m.filter != Filter::kNearestMip || m.texture < 0 || std::size_t(m.texture) >= p.textures.size()) return nullptr;
+    const TextureSpec& t = p.textures[std::size_t(m.texture)];
+    return t.width > 0 && t.height > 0 ? &t : nullptr;
+}
+
+// Marks in `mask` (the scene's image) the pixels of panel p where kNearestMip's level is
+// ambiguous: for triangles given on the screen every pixel center on one (within a tenth of a
+// pixel), for a scene drawn through draw_scene the triangle a ray through the pixel center
+// meets first, projected by the panel's camera (clipped at the near plane first).
+void mark_mip_ambiguous(const Panel& p, raster::Mask& mask) {
+    for (const ScreenTri& st : p.screen_tris) {
+        const TextureSpec* tex = nearest_mip_texture(p, st.material);
+        if (!tex) continue;
+        const ScreenTriangle t{{Vec2{st.screen[0].x, st.screen[0].y}, Vec2{st.screen[1].x, st.screen[1].y},
+                                Vec2{st.screen[2].x, st.screen[2].y}},
+                               st.w, st.uv};
+        const double area2 = (t.p[1].x - t.p[0].x) * (t.p[2].y - t.p[0].y) - (t.p[1].y - t.p[0].y) * (t.p[2].x - t.p[0].x);
+        if (area2 == 0 || !std::isfinite(area2)) continue;
+        const double x_lo = std::min({t.p[0].x, t.p[1].x, t.p[2].x}), x_hi = std::max({t.p[0].x, t.p[1].x, t.p[2].x});
+        const double y_lo = std::min({t.p[0].y, t.p[1].y, t.p[2].y}), y_hi = std::max({t.p[0].y, t.p[1].y, t.p[2].y});
+        for (int y = std::max(0, int(std::floor(y_lo)) - 1); y < std::min(p.h, int(std::ceil(y_hi)) + 1); ++y) {
+            for (int x = std::max(0, int(std::floor(x_lo)) - 1); x < std::min(p.w, int(std::ceil(x_hi)) + 1); ++x) {
+                const double px = x + 0.5, py = y + 0.5;
+                bool inside = true;
+                for (int i = 0; i < 3 && inside; ++i) {
+                    const Vec2 a = t.p[std::size_t(i)], b = t.p[std::size_t((i + 1) % 3)];
+                    const double e = ((b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x)) / (area2 > 0 ? 1 : -1);
+                    inside = e >= -0.1 * std::hypot(b.x - a.x, b.y - a.y);
+                }
+                if (inside && nearest_mip_ambiguous(t, px, py, tex->width, tex->height)) mask.set(p.x0 + x, p.y0 + y);
+            }
+        }
+    }
+    if (p.items.empty() || p.w <= 0 || p.h <= 0) return;
+    bool any = false;
+    for (const Item& it : p.items) any |= nearest_mip_texture(p, it.material) != nullptr;
+    if (!any) return;
+    const auto tris = world_triangles(p, false);
+    const Basis b = basis(p.camera);
+    const double t = std::tan(p.camera.fovy * std::numbers::pi / 360), aspect = double(p.w) / p.h;
+    auto project = [&](Vec3 q) {
+        const Vec3 d = q - p.camera.eye;
+        const double z = raster::dot(d, b.f);
+        return Vec2{(raster::dot(d, b.r) / (z * t * aspect) + 1) * p.w / 2, (1 - raster::dot(d, b.u) / (z * t)) * p.h / 2};
+    };
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            const Hit h = cast(tris, p.camera.eye, ray(p, b, x + 0.5, y + 0.5), 0);
+            if (!h.tri) continue;
+            const TextureSpec* tex = nearest_mip_texture(p, p.items[std::size_t(h.tri->item)].material);
+            if (!tex) continue;
+            // The triangle clipped at the near plane (view depth >= near), fanned from its first corner.
+            struct Corner {
+                Vec3 q;
+                Vec2 uv;
+                double z;
+            };
+            std::vector<Corner> in = {{h.tri->a, h.tri->ua, 0}, {h.tri->b, h.tri->ub, 0}, {h.tri->c, h.tri->uc, 0}}, out;
+            for (Corner& k : in) k.z = raster::dot(k.q - p.camera.eye, b.f);
+            const double near = p.camera.near;
+            for (std::size_t i = 0; i < in.size(); ++i) {
+                const Corner &c0 = in[i], &c1 = in[(i + 1) % in.size()];
+                if (c0.z >= near) out.push_back(c0);
+                if ((c0.z >= near) != (c1.z >= near)) {
+                    const double s = (near - c0.z) / (c1.z - c0.z);
+                    out.push_back({c0.q + (c1.q - c0.q) * s, c0.uv + (c1.uv - c0.uv) * s, near});
+                }
+            }
+            for (std::size_t i = 1; i + 1 < out.size(); ++i) {
+                const ScreenTriangle st{{project(out[0].q), project(out[i].q), project(out[i + 1].q)},
+                                        {out[0].z, out[i].z, out[i + 1].z},
+                                        {out[0].uv, out[i].uv, out[i + 1].uv}};
+                if (nearest_mip_ambiguous(st, x + 0.5, y + 0.5, tex->width, tex->height)) {
+                    mask.set(p.x0 + x, p.y0 + y);
+                    break;
+                }
+            }
+        }
+    }
+}
+
+cp::Tolerance tolerance_for(const Scene& s, const raster::Image& expected) {
+    cp::Tolerance tol = cp::edge_tolerance(
+        expected, "pixels next to an edge, a texel or shadow boundary or a change of mip level depend on rounding");
+    const long long band = tol.lenient.count();
+    raster::Mask mip(expected.width(), expected.height());
+    for (const Panel& p : s.panels) mark_mip_ambiguous(p, mip);
+    long long added = 0;
+    for (int y = 0; y < expected.height(); ++y) {
+        for (int x = 0; x < expected.width(); ++x) {
+            if (mip.get(x, y) && !tol.lenient.get(x, y)) {
+                tol.lenient.set(x, y);
+                ++added;
+            }
+        }
+    }
+    // Every ambiguous pixel may read the other level; the edge band keeps its fifth.
+    tol.max_lenient_diffs = band / 5 + added;
+    return tol;
 }
 
 }  // namespace
@@ -1688,7 +1856,7 @@ std::optional<cp::Finding> fill_triangle_fails(const cp::Artifacts& art, const c
     if (ref_it == ref.images.end()) return std::nullopt;
     if (mine_it != art.images.end() && mine_it->second.width() == ref_it->second.width() &&
         mine_it->second.height() == ref_it->second.height() &&
-        !cp::exceeds_tolerance(mine_it->second, ref_it->second, tolerance_for(ref_it->second))) {
+        !cp::exceeds_tolerance(mine_it->second, ref_it->second, tolerance_for(scene(kFillScene), ref_it->second))) {
         return std::nullopt;
     }
     if (mine_it != art.images.end() && mine_it->second.width() == ref_it->second.width() &&
@@ -1842,7 +2010,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
     const auto [theme_topic, theme_advice] = picture_theme(s.id);
     const std::size_t first_finding = c.j.findings.size();
     const auto ref_main = ref.images.find("main");
-    const bool differs = sized && !expected.empty() && cp::exceeds_tolerance(*mine, expected, tolerance_for(expected));
+    const bool differs = sized && !expected.empty() && cp::exceeds_tolerance(*mine, expected, tolerance_for(s, expected));
     // judge() checked every function this picture is drawn with, and they pass. When the picture
     // differs and fill_triangle (TODO 5) draws m5.fill_triangle's own triangles wrong too, that is
     // the caller to fix, whatever the scene is about: every other finding would follow from it.
@@ -2084,7 +2252,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         // The difference comes from the callers, fill_triangle (TODO 5) or draw_scene (TODO 9).
         // Nearly all of it where a normal map that does not repeat is read at uv outside [0, 1]:
         // the map was read with other wrap modes than its own (repeat).
-        const NormalWrapDiff nw = normal_map_wrap_diff(s, *mine, expected, tolerance_for(expected));
+        const NormalWrapDiff nw = normal_map_wrap_diff(s, *mine, expected, tolerance_for(s, expected));
         if (nw.outside >= 20 && 10 * nw.outside >= 9 * nw.strict) {
             // Nearly all of them where only one axis leaves [0, 1]: that axis's mode was not its own.
             const std::string axis = 10 * nw.only_v >= 9 * nw.outside   ? "v"
@@ -2137,7 +2305,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
                     const raster::Image& expected) {
     const Scene& s = scene(id);
     cp::Judgement j;
-    if (!expected.empty()) j.tolerance = tolerance_for(expected);
+    if (!expected.empty()) j.tolerance = tolerance_for(s, expected);
     Ctx c{s, artifacts.values, reference.values, j};
     if (artifacts.stray_writes > 0) {
         c.add("rasterizer", "TODO 5: " + plural(double(artifacts.stray_writes), "write") +
