@@ -795,6 +795,7 @@ void judge_phong(Ctx& c) {
         const Vec3 mine = vec3(v, "phong" + std::to_string(i)), want = t_phong(k);
         if (same3(mine, want, 1e-9)) continue;
         std::string why, topic = "specular";
+        bool zero_vector = false;
         const double cl = raster::dot(unit_or_zero(k.normal), unit_or_zero(k.to_light));
         // The specular term raised from dot(N, L), or from Phong's dot(R, V), instead of dot(N, H).
         const bool from_nl = cl > 0 && same3(mine, with_specular_base(k, cl), 1e-9);
@@ -808,6 +809,16 @@ void judge_phong(Ctx& c) {
             why = ": dot(N, L) = " + num(cl) + " <= 0, so this light adds NOTHING: no diffuse and no specular either";
         } else if (same3(mine, Vec3{}, 1e-12)) {
             why = ": blinn_phong returned nothing";
+        } else if (const char* zero = unit_or_zero(k.normal) == Vec3{}     ? "N (normal)"
+                                      : unit_or_zero(k.to_eye) == Vec3{}   ? "V (to_eye)"
+                                      : unit_or_zero(k.to_light) == Vec3{} ? "L (to_light)"
+                                                                           : nullptr) {
+            // A zero vector cannot be normalized: the header makes that light add nothing
+            // (with V = 0, H = L and the result looks like a specular term raised from dot(N, L)).
+            topic = "specular";
+            zero_vector = true;
+            why = std::string(": ") + zero + " is the zero vector, and a zero one makes the light add NOTHING (the header): "
+                  "return zero, no diffuse and no specular, before normalizing (never NaN)";
         } else if (from_nl || from_rv) {
             // Phong's dot(R, V) equals dot(N, L) where V = N: one message names both.
             why = std::string(": the specular term was raised from ") +
@@ -840,6 +851,9 @@ void judge_phong(Ctx& c) {
         out.add(topic, "TODO 6: blinn_phong(base " + str(k.base) + ", specular " + str(k.specular) + ", shininess " +
                            num(k.shininess) + ", N " + str(k.normal) + ", V " + str(k.to_eye) + ", L " + str(k.to_light) +
                            ", I " + str(k.intensity) + ") gave " + str(mine) + ", expected " + str(want) + why);
+        if (zero_vector && out.more == 0) {
+            c.j.findings.back().hint = "a zero N, V or L makes the light add nothing: return zero before normalizing";
+        }
     }
 }
 
