@@ -1474,6 +1474,61 @@ double share_off(const raster::Image& img, const Panel& p, const Truth& t) {
     return n ? 100.0 * double(off) / double(n) : 0;
 }
 
+// The pixels that differ from the expected image beyond the tolerance (strictly), split by what a
+// ray through the pixel center meets first: a lit item with a normal map and no texture
+// (`untextured`), or one with both (`textured`, of `textured_pixels` such pixels in all); and on
+// the untextured ones, how many pairs of neighbouring pixels (on the same item) differ by more
+// than 3 levels, in the expected image (`bumpy_expected`) and in yours (`bumpy_mine`). A
+// normal map read without uv is read at (0, 0) all over: its bumps vanish, and those items come
+// out as smooth as without a map, where the expected image shows bumps.
+struct NormalUvDiff {
+    long long strict = 0, untextured = 0, textured = 0, textured_pixels = 0, bumpy_expected = 0, bumpy_mine = 0;
+};
+NormalUvDiff normal_map_uv_diff(const Scene& s, const raster::Image& mine, const raster::Image& expected,
+                                const cp::Tolerance& tol) {
+    NormalUvDiff out;
+    if (mine.width() != expected.width() || mine.height() != expected.height()) return out;
+    for (const Panel& p : s.panels) {
+        if (p.items.empty()) continue;
+        const auto tris = world_triangles(p, false);
+        const Basis b = basis(p.camera);
+        // Per pixel: the untextured normal-mapped item it shows, or -1.
+        std::vector<int> item(std::size_t(p.w) * std::size_t(p.h), -1);
+        for (int y = 0; y < p.h; ++y) {
+            for (int x = 0; x < p.w; ++x) {
+                const int gx = p.x0 + x, gy = p.y0 + y;
+                if (!expected.in_bounds(gx, gy)) continue;
+                const bool strict = !tol.lenient.get(gx, gy) && max_diff(mine.at(gx, gy), expected.at(gx, gy)) > tol.strict_channel_diff;
+                out.strict += strict;
+                const Hit h = cast(tris, p.camera.eye, ray(p, b, x + 0.5, y + 0.5), 0);
+                if (!h.tri) continue;
+                const MaterialSpec& m = p.items[std::size_t(h.tri->item)].material;
+                if (!m.lit || m.normal_map < 0 || std::size_t(m.normal_map) >= p.textures.size()) continue;
+                if (m.texture >= 0 && std::size_t(m.texture) < p.textures.size()) {
+                    ++out.textured_pixels;
+                    out.textured += strict;
+                } else {
+                    out.untextured += strict;
+                    item[std::size_t(y) * std::size_t(p.w) + std::size_t(x)] = h.tri->item;
+                }
+            }
+        }
+        for (int y = 0; y < p.h; ++y) {
+            for (int x = 0; x < p.w; ++x) {
+                const int it = item[std::size_t(y) * std::size_t(p.w) + std::size_t(x)];
+                if (it < 0) continue;
+                for (const auto& [nx, ny] : {std::pair{x + 1, y}, std::pair{x, y + 1}}) {
+                    if (nx >= p.w || ny >= p.h || item[std::size_t(ny) * std::size_t(p.w) + std::size_t(nx)] != it) continue;
+                    const int gx = p.x0 + x, gy = p.y0 + y, hx = p.x0 + nx, hy = p.y0 + ny;
+                    out.bumpy_expected += max_diff(expected.at(gx, gy), expected.at(hx, hy)) > 3;
+                    out.bumpy_mine += max_diff(mine.at(gx, gy), mine.at(hx, hy)) > 3;
+                }
+            }
+        }
+    }
+    return out;
+}
+
 // The pixels that differ from the expected image beyond the tolerance (strictly), and how many of
 // them a ray finds on an item whose normal map does not repeat, at uv outside [0, 1] on an axis
 // that does not repeat: there the map's own wrap modes decide the texel. `modes` names the wrap
@@ -2285,6 +2340,24 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                     "mirrored repeat reads a flat part of the map)" + one_axis);
             c.j.findings.back().hint = "fill_triangle reads the normal map with sample_bilinear on level 0 and the map's own "
                                        "wrap modes: sample_bilinear(level 0, uv, normal_map->wrap_u, normal_map->wrap_v)";
+        }
+        // Nearly all of it on normal-mapped items without a texture,
+        const NormalUvDiff nu = normal_map_uv_diff(s, *mine, expected, tolerance_for(s, expected));
+        // and there as smooth as without a map where the expected image shows its bumps.
+        if (nu.untextured >= 20 && 10 * nu.untextured >= 9 * nu.strict && nu.bumpy_expected >= 50 &&
+            4 * nu.bumpy_mine <= nu.bumpy_expected) {
+            const bool textured_right = nu.textured_pixels >= 50 && 100 * nu.textured <= nu.textured_pixels;
+            c.add("normal map", "TODO 9: " + std::to_string(nu.untextured) + " of the " + std::to_string(nu.strict) +
+                                    " pixels that differ beyond the tolerance lie on normal-mapped items WITHOUT a texture, "
+                                    "and there your picture is smooth where the expected one shows the map's bumps (" +
+                                    std::to_string(nu.bumpy_mine) + " steps between neighbouring pixels against " +
+                                    std::to_string(nu.bumpy_expected) + ")" +
+                                    (textured_right ? ", while the normal-mapped item with a texture is right" : "") +
+                                    ": a normal map is read at uv too, so draw_scene must interpolate uv (give each "
+                                    "screen vertex the mesh's uv) wherever the material has a texture OR a normal map "
+                                    "(lesson section 10); without uv the map is read at (0, 0) all over");
+            c.j.findings.back().hint = "draw_scene gives every screen vertex its uv when the material has a texture or a "
+                                       "normal map (a lit one), not only for a texture";
         }
         {
             std::vector<std::string> passing;
