@@ -48,7 +48,7 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"level of detail", {"TODO 4", "exact derivatives of A / B at the pixel center; rho in texel units of level 0; lambda = log2(rho)"}},
         {"filter", {"TODO 4", "lambda <= 0 or NaN: bilinear on level 0; else clamp to [0, L - 1]; nearest-mip level floor(lambda + 0.5)"}},
         {"lambda clamp", {"TODO 4", "clamp lambda to [0, L - 1]: never read past the 1x1 level"}},
-        {"trilinear", {"TODO 4", "blend the bilinear samples of levels floor(lambda) and floor(lambda) + 1 by the fraction of lambda"}},
+        {"trilinear", {"TODO 4", "blend the bilinear samples of levels k = floor(lambda) and k + 1 as (1 - f) level k + f level k + 1, f = lambda - k"}},
         {"mipmap builds", {"TODO 4", "build the pyramid once, the first time a mip filter reads a level above 0; never for lambda <= 0"}},
         {"perspective uv", {"TODO 5", "interpolate u/w, v/w and 1/w on the screen (m4::perspective_weights), in double"}},
         {"rasterizer", {"TODO 5", "milestone 2's snapping, edge functions and top-left rule; depth pre-test before shading"}},

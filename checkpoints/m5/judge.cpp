@@ -711,6 +711,17 @@ void judge_filter(Ctx& c) {
                 topic = "trilinear";
                 why = ": that is level floor(lambda) alone; trilinear BLENDS the bilinear samples of levels floor(lambda) "
                       "and floor(lambda) + 1 by the fraction of lambda";
+            } else if (const double lam = std::min(k.lambda, top), f = lam - std::floor(lam);
+                       k.filter == Filter::kTrilinear && f != 0.5 &&
+                       same3(mine,
+                             t_bilinear(pyr[std::size_t(std::floor(lam))], k.uv, k.wrap_u, k.wrap_v) * f +
+                                 t_bilinear(pyr[std::min(std::size_t(std::floor(lam)) + 1, pyr.size() - 1)], k.uv, k.wrap_u,
+                                            k.wrap_v) * (1 - f),
+                             1e-9)) {
+                topic = "trilinear";
+                why = ": that is the blend the wrong way round, f = " + num(f) + " on level floor(lambda) = " +
+                      num(std::floor(lam)) + " and 1 - f on the next; the fraction f = lambda - floor(lambda) is the "
+                      "weight of the NEXT level: (1 - f) bilinear(level floor(lambda)) + f bilinear(level floor(lambda) + 1)";
             } else if (k.filter == Filter::kNearestMip) {
                 why = ": nearest-mip reads level floor(lambda + 0.5) (here " + num(std::floor(std::min(k.lambda, top) + 0.5)) +
                       ") bilinearly";
