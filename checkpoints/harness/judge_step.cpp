@@ -467,8 +467,13 @@ void print_verdict(std::ostream& out, const Suite& suite, const Verdict& v) {
         }
         if (!names.empty()) out << "  pictures:\n";
         for (const std::string& name : names) {
-            out << "    " << (fs::path(rec.output_dir) / (name + ".png")).string()
-                << (name == "diff" ? std::string("  (") + kDiffLegend + ")" : std::string()) << "\n";
+            // fill_triangle.png, beside a picture drawn through the pipeline: say what it is for.
+            const std::string note = name == "diff" ? std::string("  (") + kDiffLegend + ")"
+                                     : name == "fill_triangle"
+                                         ? "  (the " + suite.milestone + ".fill_triangle scene by your fill_triangle alone: if it differs from "
+                                           "that checkpoint's expected picture, fix fill_triangle first)"
+                                         : std::string();
+            out << "    " << (fs::path(rec.output_dir) / (name + ".png")).string() << note << "\n";
         }
     }
     if (failing) {
