@@ -349,6 +349,8 @@ enum class Lookup {
     kTieShadowed, // d - bias / (2r) >= stored: a tie shadowed
     kAlongRays,   // c = dot(n, +normalize(direction)): L the way the rays travel, so c <= 0 and the cap
     kNdcDepth,    // z_ndc - bias / (2r): the point's z_ndc compared as it is, not its depth (z_ndc + 1) / 2
+    kPcfAhead,    // the PCF kernel off centre: offsets 0, 1, 2 instead of -1, 0, 1
+    kPcfBehind,   // the PCF kernel off centre: offsets -2, -1, 0
 };
 
 // The bias of a shadow case in world units: constant + slope * min(tan(theta), 10), with
@@ -394,9 +396,10 @@ double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::k
     };
     const double col = std::floor(x), row = std::floor(y);
     if (!c.pcf) return lit(col, row);
+    const int shift = mode == Lookup::kPcfAhead ? 1 : mode == Lookup::kPcfBehind ? -1 : 0;
     double sum = 0;
     for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) sum += lit(col + dx, row + dy);
+        for (int dx = -1; dx <= 1; ++dx) sum += lit(col + dx + shift, row + dy + shift);
     }
     return sum / 9;
 }
@@ -1009,6 +1012,18 @@ void judge_shadow(Ctx& c) {
         }
         return changes;
     };
+    // The PCF kernel off centre: every PCF case as the 3x3 shifted by one texel along both axes.
+    auto pcf_fits = [&](Lookup mode) {
+        bool changes = false;
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            if (!cases[i].pcf) continue;
+            const double wrong = t_shadow(map, cases[i], mode);
+            if (!close(get(v, "shadow" + std::to_string(i)), wrong, 1e-9)) return false;
+            changes |= !close(wrong, t_shadow(map, cases[i]), 1e-9);
+        }
+        return changes;
+    };
+    const bool pcf_ahead = pcf_fits(Lookup::kPcfAhead), pcf_behind = pcf_fits(Lookup::kPcfBehind);
     Limited out{c, "shadow_factor", 0, 0, "shadow", "8"};
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const auto& k = cases[i];
@@ -1069,6 +1084,10 @@ void judge_shadow(Ctx& c) {
         } else if (fits(Lookup::kUnflipped) && close(mine, t_shadow(map, k, Lookup::kUnflipped), 1e-9)) {
             why = ": the map is read upside down: the texel's row is floor(y) of m3::to_screen, which flips NDC y "
                   "(y = (1 - y_ndc) / 2 * resolution, row 0 at the top, as the depth pass drew it)";
+        } else if (k.pcf && (pcf_ahead || pcf_behind)) {
+            why = std::string(": every PCF case comes out as a 3x3 kernel OFF CENTRE, texels ") +
+                  (pcf_ahead ? "col .. col + 2 and row .. row + 2 (offsets 0, 1, 2)" : "col - 2 .. col and row - 2 .. row (offsets -2, -1, 0)") +
+                  ": the kernel is centered on the texel (col, row) p falls in, offsets -1, 0, 1 along each axis";
         } else if (i == 2) {
             topic = "shadow bias";
             why = ": the point is 0.001 below the floor's stored depth; the constant bias (0.02 world units, 0.02 / (2r) in "
