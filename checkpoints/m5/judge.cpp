@@ -1842,7 +1842,7 @@ void judge_depth_ties(Ctx& c, const raster::Image& mine, const cp::Artifacts& re
 void judge_lod_center(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
     const auto ref_it = ref.images.find("main");
     if (ref_it == ref.images.end()) return;
-    long long telling = 0, corner_like = 0, center_like = 0;
+    cp::PixelVote corner;
     for (const ScreenTri& t : panel.screen_tris) {
         const MaterialSpec& m = t.material;
         if (m.texture < 0 || std::size_t(m.texture) >= panel.textures.size() ||
@@ -1876,20 +1876,14 @@ void judge_lod_center(Ctx& c, const raster::Image& mine, const cp::Artifacts& re
                     return to_color(t_sample(pyr, uv, lambda, m.filter, spec.wrap_u, spec.wrap_v));
                 };
                 const Color at_center = color_with_lambda_at(px, py), at_corner = color_with_lambda_at(x, y);
-                if (max_diff(at_center, at_corner) <= 10 ||
-                    max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), at_center) > 3) {
-                    continue;
-                }
-                ++telling;
-                const Color mc = mine.at(panel.x0 + x, panel.y0 + y);
-                corner_like += max_diff(mc, at_corner) <= 3;
-                center_like += max_diff(mc, at_center) <= 3;
+                if (max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), at_center) > 3) continue;
+                corner.cast(mine.at(panel.x0 + x, panel.y0 + y), at_center, at_corner);
             }
         }
     }
-    if (corner_like >= 10 && corner_like > center_like) {
-        c.add("rasterizer", "TODO 5: at " + std::to_string(corner_like) + " of " + std::to_string(telling) +
-                                " pixels of the triangles with a mip filter where the level changes between a pixel's "
+    if (corner.names_mistake()) {
+        c.add("rasterizer", "TODO 5: " + corner.tally() +
+                                " of the triangles with a mip filter where the level changes between a pixel's "
                                 "corner and its center, your colors are those of lambda taken at the pixel's CORNER "
                                 "(x, y): take uv_derivatives at its center (x + 0.5, y + 0.5), where the pixel is "
                                 "sampled");
@@ -1911,7 +1905,7 @@ void judge_screen_uv(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref
     const double area = (t.screen[1].x - t.screen[0].x) * (t.screen[2].y - t.screen[0].y) -
                         (t.screen[1].y - t.screen[0].y) * (t.screen[2].x - t.screen[0].x);
     if (area == 0) return;
-    long long telling = 0, screen_like = 0, perspective_like = 0;
+    cp::PixelVote screen_space;
     for (int y = 0; y < panel.h; ++y) {
         for (int x = 0; x < panel.w; ++x) {
             const double px = x + 0.5, py = y + 0.5;
@@ -1930,16 +1924,13 @@ void judge_screen_uv(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref
             }
             const Color pc = to_color(t_nearest(level, persp, spec->wrap_u, spec->wrap_v));
             const Color sc = to_color(t_nearest(level, flat, spec->wrap_u, spec->wrap_v));
-            if (max_diff(pc, sc) <= 10 || max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), pc) > 3) continue;
-            ++telling;
-            const Color m = mine.at(panel.x0 + x, panel.y0 + y);
-            screen_like += max_diff(m, sc) <= 3;
-            perspective_like += max_diff(m, pc) <= 3;
+            if (max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), pc) > 3) continue;
+            screen_space.cast(mine.at(panel.x0 + x, panel.y0 + y), pc, sc);
         }
     }
-    if (screen_like >= 10 && screen_like > perspective_like) {
-        c.add("perspective uv", "TODO 5: at " + std::to_string(screen_like) + " of " + std::to_string(telling) +
-                                    " pixels inside the first triangle your texels are those of the SCREEN-space uv: weigh "
+    if (screen_space.names_mistake()) {
+        c.add("perspective uv", "TODO 5: " + screen_space.tally() +
+                                    " inside the first triangle your texels are those of the SCREEN-space uv: weigh "
                                     "each vertex's uv by l_i / w_i and normalize (m4::perspective_weights)");
     }
     judge_depth_ties(c, mine, ref, panel);
