@@ -61,7 +61,7 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"rasterizer", {"TODO 8", "milestone 2's snapping, edge functions and top-left rule, with depth and attributes"}},
         {"per-pixel normals", {"TODO 8", "normalize the interpolated normal before lighting: it is shorter than 1 between vertices"}},
         {"flat shading", {"TODO 9", "one light value per triangle: face normal of the world positions, at the centroid"}},
-        {"gouraud", {"TODO 9", "light every vertex once, interpolate the lit colors"}},
+        {"gouraud", {"TODO 9", "light every vertex once, interpolate the lit colors (perspective-correctly, as every attribute)"}},
         {"face color", {"TODO 9", "a triangle without a face color (past the end of face_colors) is white"}},
         {"needs", {"TODO 9", "allocate, compute and interpolate only what Needs asks for"}},
         {"pipeline", {"TODO 9", "follow draw_mesh's steps in depth_lighting.h and count each as Stats says"}},

@@ -280,11 +280,33 @@ void judge_group(Group g, Ctx& c) {
                 return len > 0 && std::abs(len - 1) > 1e-9;
             };
             const bool only_non_unit = !failing.empty() && std::all_of(failing.begin(), failing.end(), non_unit);
+            // Every failing case is exactly what the right formula gives with every directional
+            // light reversed, and so is case 0 or 1 (one light, straight on or from behind): L
+            // is the light's travel direction. That finding explains the rest (a light behind
+            // now adds, the grazing case's other light is lost), so they are not reported apart.
+            auto reversed_lights = [](std::vector<LightSpec> ls) {
+                for (LightSpec& l : ls) {
+                    if (!l.point) l.vector = -l.vector;
+                }
+                return ls;
+            };
+            const bool flipped =
+                !only_non_unit && !failing.empty() && (failing.front() == 0 || failing.front() == 1) &&
+                std::all_of(failing.begin(), failing.end(), [&](std::size_t i) {
+                    const auto& k = cases[i];
+                    return same3(vec3(v, "shade" + std::to_string(i)),
+                                 lambert(k.ambient, reversed_lights(k.lights), k.base, k.position, k.normal), 1e-9);
+                });
+            std::string also;  // the other failing cases the reversal explains
+            for (std::size_t i : failing) {
+                if (flipped && i > 1) also += (also.empty() ? "" : ", ") + std::to_string(i);
+            }
             for (std::size_t i = 0; i < cases.size(); ++i) {
                 const auto& k = cases[i];
                 const Vec3 want = lambert(k.ambient, k.lights, k.base, k.position, k.normal);
                 const Vec3 mine = vec3(v, "shade" + std::to_string(i));
                 if (same3(mine, want, 1e-9)) continue;
+                if (flipped && i > 1) continue;  // explained by the finding of case 0 or 1
                 const Vec3 ambient_only{k.base.r * k.ambient.x, k.base.g * k.ambient.y, k.base.b * k.ambient.z};
                 std::string topic = "lambert", why;
                 const bool all_zero = same3(mine, Vec3{}, 0);
@@ -301,6 +323,12 @@ void judge_group(Group g, Ctx& c) {
                 } else if ((i == 0 && same3(mine, ambient_only, 1e-9)) || (i == 1 && mine.x > ambient_only.x + 1e-6)) {
                     topic = "light direction";
                     why = ": L must point from the surface TOWARD the light, i.e. -direction for a directional light";
+                    if (flipped && !also.empty() && i == failing[failing.size() > 1 && failing[1] == 1 ? 1 : 0]) {
+                        const bool one = also.find(',') == std::string::npos;
+                        why += std::string(one ? " (case " : " (cases ") + also + (one ? " fails" : " fail") +
+                               " too, exactly as the right formula gives with every directional light reversed: the "
+                               "same mistake)";
+                    }
                 } else if (i == 2 || i == 8) {
                     topic = "grazing light";
                 } else if (i == 6) {
@@ -372,6 +400,23 @@ void judge_group(Group g, Ctx& c) {
         }
         case Group::kClip: {
             const auto cases = clip_cases();
+            {
+                // Nothing back for any case, where the reference keeps a polygon: clip_triangle
+                // is not written yet (or returns before it walks the planes), not an inside test.
+                bool none = true, ref_some = false;
+                for (std::size_t i = 0; i < cases.size(); ++i) {
+                    none &= get(v, "clip" + std::to_string(i) + ".n") == 0;
+                    ref_some |= get(c.ref, "clip" + std::to_string(i) + ".n") > 0;
+                }
+                if (none && ref_some) {
+                    c.add("clipping", "TODO 7: clip_triangle returned no vertices for any of the " +
+                                          std::to_string(cases.size()) + " cases, even the triangle entirely inside "
+                                          "(case 0, expected its 3 vertices): is it written yet? Start from the "
+                                          "triangle's 3 vertices and clip the polygon against each of the six planes "
+                                          "in turn, keeping a vertex when d >= 0");
+                    break;
+                }
+            }
             static const char* kFields[] = {".cx", ".cy", ".cz", ".cw", ".color.x", ".color.y", ".color.z", ".normal.x",
                                             ".normal.y", ".normal.z", ".world.x", ".world.y", ".world.z", ".u", ".v"};
             for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -581,8 +626,10 @@ std::pair<std::string, std::string> caller_of(const std::string& theme, Shade sh
                                     "positions, at its centroid"};
         }
         if (shading == Shade::kGouraud) {
-            return {"gouraud", "TODO 9: draw_mesh lights every vertex once, at its world position with its world "
-                               "normal, and fill_triangle interpolates the lit colors"};
+            return {"gouraud", "TODOs 8, 9: draw_mesh lights every vertex once, at its world position with its world "
+                               "normal, and fill_triangle interpolates the lit colors with the perspective-correct "
+                               "weights of perspective_weights: with the screen weights "
+                               "l_i a Gouraud sphere's colors shift only a little, so only its picture shows it"};
         }
         return {"per-pixel normals", "TODOs 8 and 9: draw_mesh gives each vertex its world position (model * "
                                      "position) and world normal; fill_triangle interpolates both with the "
@@ -732,6 +779,8 @@ void judge_screen_weights(Ctx& c, const raster::Image& mine, const cp::Artifacts
                                  " pixels inside the first triangle your colors are the SCREEN-weighted ones: weigh "
                                  "each vertex by l_i / w_i and normalize (perspective_weights) unless "
                                  "needs.perspective_correct is false");
+        if (!c.j.findings.empty()) c.j.findings.back().hint = "fill_triangle weighs every attribute with perspective_weights(l, w): l_i / w_i, "
+                                   "normalized, unless needs.perspective_correct is false";
     }
 }
 
@@ -950,6 +999,14 @@ void judge_fill_rule(Ctx& c, const raster::Image& mine, const Panel& panel, cons
 
 void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, const raster::Image& expected);
 
+// A finding of fill_triangle's that names an idea (perspective weights, depth keys, the test
+// order, the fill rule), not only a count or "the picture differs".
+bool names_the_idea(const cp::Finding& f) {
+    return f.topic == "perspective" || f.topic == "depth key" || f.topic == "indexing" ||
+           (f.topic == "fill rule" && f.message.find("lies exactly on an edge") != std::string::npos) ||
+           f.message.find("failed the depth test") != std::string::npos;
+}
+
 // fill_triangle (TODO 8) on m4.fill_triangle's own triangles, then on m4.shared_edges', drawn
 // by the render half of a scene that calls it through draw_mesh (render.cpp, kFillKey and
 // kFillRuleKey), judged against the reference's run of the same triangles as those checkpoints
@@ -980,11 +1037,7 @@ std::optional<cp::Finding> fill_triangle_fails_on(const cp::Artifacts& art, cons
     // The finding that names an idea (perspective weights, depth keys, the test order, the fill
     // rule) before a count, and a count before "the picture differs".
     auto rank = [](const cp::Finding& f) {
-        if (f.topic == "perspective" || f.topic == "depth key" || f.topic == "indexing" ||
-            (f.topic == "fill rule" && f.message.find("lies exactly on an edge") != std::string::npos) ||
-            f.message.find("failed the depth test") != std::string::npos) {
-            return 0;
-        }
+        if (names_the_idea(f)) return 0;
         return f.message.rfind("the picture differs", 0) == 0 ? 2 : 1;
     };
     const cp::Finding* best = &scratch.findings.front();
@@ -1138,6 +1191,16 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 zero_area += a == b || b == d || d == a;
             }
         }
+        // kPerPixel interpolates 3 values per fragment lit, 6 with a point light (the world
+        // position): 3 more per call of shade() than the reference with no point light is that.
+        const double mine_shade = get(c.mine, key + ".stats.shade_calls"), ref_shade = get(c.ref, key + ".stats.shade_calls");
+        const bool point_lit = std::any_of(panel.lights.begin(), panel.lights.end(), [](const LightSpec& l) { return l.point; });
+        const bool world_needless = per_pixel_shading && !point_lit && mine_shade > 0 && ref_shade > 0 &&
+                                    std::abs(get(c.mine, key + ".stats.interpolated") / mine_shade -
+                                             get(c.ref, key + ".stats.interpolated") / ref_shade - 3) < 0.25;
+        // A depth-write count off with nothing else to say of it, which screen-weighted colors
+        // explain (an exact tie goes to the brighter color, so other colors win other ties).
+        std::size_t plain_writes = std::string::npos;
         for (const auto& st : kStats) {
             const std::string k = key + ".stats." + st[0];
             const double a = get(c.mine, k), b = get(c.ref, k);
@@ -1172,6 +1235,19 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                       "orientation";
             } else if (b == 0) {
                 why = ": this scene does not need that stage (Needs), so it must not run";
+            } else if (name == "triangles_clipped") {
+                why = a < b ? ": every mesh triangle not entirely inside the view volume (some vertex with d < 0 for "
+                              "some plane) goes to clip_triangle and is counted, even one entirely outside a plane "
+                              "that clip_triangle then returns empty: triangles_clipped counts the triangles sent, "
+                              "not those that survive, so do not reject any before clip_triangle"
+                            : ": only a mesh triangle with a vertex outside some plane (d < 0) goes to clip_triangle; "
+                              "one with all three vertices inside is fanned as it is, uncounted";
+            } else if (name == "interpolated" && world_needless) {
+                why = ": that is " + num(std::round(a / mine_shade * 100) / 100) + " values per fragment lit (per call of "
+                      "shade()), where the reference interpolates " + num(std::round(b / ref_shade * 100) / 100) +
+                      ": the world position (3 values) was interpolated too, though no light of this panel is a point "
+                      "light. Only a point light needs it (FillState::point_light); with directional lights alone a "
+                      "kPerPixel fragment interpolates its normal only";
             } else if ((name == "interpolated" || (name == "shade_calls" && per_pixel_shading)) && a > b &&
                        panel.depth_test) {
                 why = ": are hidden fragments interpolated too? Test the depth first; only a fragment that "
@@ -1219,8 +1295,10 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             }
             const bool needless = b == 0 && !(name == "triangles_culled" && (panel.cull || culled_drawn));
             const char* counted = a == 1 ? st[3] : st[2];
+            const std::size_t count_at = c.j.findings.size();
             c.add(needless ? "needs" : fill_rule_count ? "fill rule" : culled_drawn && name == "triangles_culled" ? "culling" : st[1], std::string(st[4]) + ": " + num(a) + " " + counted + where + ", expected " +
                                                 (per_triangle ? num(b) : "about " + num(b)) + why);
+            if (name == "depth_writes" && why.empty() && c.j.findings.size() > count_at) plain_writes = count_at;
         }
         for (std::size_t k = 0; k < panel.depth_probes.size(); ++k) {
             const std::string pk = key + ".probe" + std::to_string(k);
@@ -1256,9 +1334,19 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                                 : std::string(a < b ? ", a nearer key" : ", a farther key") +
                                                       " (the rule: z_ndc is interpolated with the screen weights "
                                                       "l_i, then keyed by depth_key)"));
+            if (!overwritten && !c.j.findings.empty() && c.j.findings.back().topic == "depth key") {
+                c.j.findings.back().hint = "fill_triangle interpolates z_ndc with the screen weights l_i (depth is "
+                                           "affine on the screen, unlike the attributes), then keys it with depth_key";
+            }
         }
         if (!sized) continue;
-        if (!panel.screen_tris.empty()) judge_screen_weights(c, *mine, ref, panel);
+        if (!panel.screen_tris.empty()) {
+            const std::size_t before = c.j.findings.size();
+            judge_screen_weights(c, *mine, ref, panel);
+            if (c.j.findings.size() > before && plain_writes < before) {
+                c.j.findings.erase(c.j.findings.begin() + std::ptrdiff_t(plain_writes));
+            }
+        }
         if (s.checks.fill_rule && !panel.screen_tris.empty()) judge_fill_rule(c, *mine, panel, where);
         if (s.checks.normal_lengths) judge_normal_lengths(c, *mine, panel, where);
         if (s.checks.checker_error) {
@@ -1333,6 +1421,12 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         }
     }
     if (keep < c.j.findings.size()) c.j.findings.resize(keep);
+    // fill_triangle's own checkpoints: a finding that names the idea (screen weights, a depth
+    // key, the test order, the fill rule) comes before "the picture differs", so that it leads
+    // the report, its concept and its hint.
+    if (s.id == kFillScene || s.id == kFillRuleScene) {
+        std::stable_partition(c.j.findings.begin(), c.j.findings.end(), names_the_idea);
+    }
 }
 
 }  // namespace
