@@ -631,11 +631,13 @@ std::vector<Scene> build() {
 
     // ---- only what a scene needs ----
     {
-        Scene s = picture("m4.needs", "One sphere, four sets of needs: what each stage costs",
+        Scene s = picture("m4.needs", "One sphere, five sets of needs: what each stage costs",
                           "allocate the depth buffer, compute normals and interpolate attributes only when needed",
-                          {9, 2, 8}, 288, 72);
-        const Shade modes[4] = {Shade::kFaceColor, Shade::kFaceColor, Shade::kGouraud, Shade::kPerPixel};
-        for (int p = 0; p < 4; ++p) {
+                          {9, 2, 8}, 360, 72);
+        // Per-pixel twice: with a point light (normal and world position interpolated), and
+        // with the directional light alone (the normal only).
+        const Shade modes[5] = {Shade::kFaceColor, Shade::kFaceColor, Shade::kGouraud, Shade::kPerPixel, Shade::kPerPixel};
+        for (int p = 0; p < 5; ++p) {
             Item ball = item(sphere_mesh(16, false));
             for (std::size_t f = 0; f < ball.mesh.face_colors.size(); ++f) {
                 ball.mesh.face_colors[f] = (f % 3 == 0) ? kRed : (f % 3 == 1) ? kGreen : kBlue;
