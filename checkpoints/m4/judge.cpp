@@ -746,10 +746,7 @@ void judge_screen_weights(Ctx& c, const raster::Image& mine, const cp::Artifacts
                         (t.screen[1].y - t.screen[0].y) * (t.screen[2].x - t.screen[0].x);
     if (area == 0) return;
     auto rounded = [](Vec3 v) { return Color{raster::to_channel(v.x), raster::to_channel(v.y), raster::to_channel(v.z)}; };
-    auto close = [](Color a, Color b, int tol) {
-        return std::abs(a.r - b.r) <= tol && std::abs(a.g - b.g) <= tol && std::abs(a.b - b.b) <= tol;
-    };
-    long long telling = 0, screen_like = 0, perspective_like = 0;
+    cp::PixelVote screen_weighted;
     for (int y = 0; y < panel.h; ++y) {
         for (int x = 0; x < panel.w; ++x) {
             const double px = x + 0.5, py = y + 0.5;
@@ -767,16 +764,12 @@ void judge_screen_weights(Ctx& c, const raster::Image& mine, const cp::Artifacts
                 flat = flat + t.color[std::size_t(i)] * l[i];
             }
             const Color pc = rounded(persp), sc = rounded(flat);
-            if (close(pc, sc, 10) || !close(ref_it->second.at(panel.x0 + x, panel.y0 + y), pc, 3)) continue;
-            ++telling;
-            const Color m = mine.at(panel.x0 + x, panel.y0 + y);
-            screen_like += close(m, sc, 3);
-            perspective_like += close(m, pc, 3);
+            if (cp::max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), pc) > 3) continue;
+            screen_weighted.cast(mine.at(panel.x0 + x, panel.y0 + y), pc, sc);
         }
     }
-    if (screen_like >= 10 && screen_like > perspective_like) {
-        c.add("perspective", "TODO 8: at " + std::to_string(screen_like) + " of " + std::to_string(telling) +
-                                 " pixels inside the first triangle your colors are the SCREEN-weighted ones: weigh "
+    if (screen_weighted.names_mistake()) {
+        c.add("perspective", "TODO 8: " + screen_weighted.tally() + " inside the first triangle your colors are the SCREEN-weighted ones: weigh "
                                  "each vertex by l_i / w_i and normalize (perspective_weights) unless "
                                  "needs.perspective_correct is false");
         if (!c.j.findings.empty()) c.j.findings.back().hint = "fill_triangle weighs every attribute with perspective_weights(l, w): l_i / w_i, "
@@ -838,10 +831,7 @@ void judge_normal_lengths(Ctx& c, const raster::Image& mine, const Panel& p, con
         return Color{raster::to_channel(127.5 * (u.x + 1)), raster::to_channel(127.5 * (u.y + 1)),
                      raster::to_channel(127.5 * (u.z + 1))};
     };
-    auto near = [](Color a, Color e, int tol) {
-        return std::abs(a.r - e.r) <= tol && std::abs(a.g - e.g) <= tol && std::abs(a.b - e.b) <= tol;
-    };
-    long long telling = 0, unnormalized_like = 0, normalized_like = 0;
+    cp::PixelVote unnormalized(12);
     for (int y = 0; y < p.h; ++y) {
         for (int x = 0; x < p.w; ++x) {
             const Vec3 d = ray(p, b, x, y);
@@ -877,17 +867,11 @@ void judge_normal_lengths(Ctx& c, const raster::Image& mine, const Panel& p, con
                 }
             }
             if (!std::isfinite(best)) continue;
-            const Color want = color_of(good), wrong = color_of(bad);
-            if (near(want, wrong, 12)) continue;
-            ++telling;
-            const Color got = mine.at(p.x0 + x, p.y0 + y);
-            unnormalized_like += near(got, wrong, 3);
-            normalized_like += near(got, want, 3);
+            unnormalized.cast(mine.at(p.x0 + x, p.y0 + y), color_of(good), color_of(bad));
         }
     }
-    if (unnormalized_like >= 10 && unnormalized_like > normalized_like) {
-        c.add("normal matrix", "TODO 9: at " + std::to_string(unnormalized_like) + " of " + std::to_string(telling) +
-                                   " pixels well inside the quad" + where +
+    if (unnormalized.names_mistake()) {
+        c.add("normal matrix", "TODO 9: " + unnormalized.tally() + " well inside the quad" + where +
                                    " your normal colors are those of normals interpolated at the lengths the normal "
                                    "matrix gives them: under a non-uniform scale it lengthens some normals and shortens "
                                    "others, and a blend leans toward the longer ones. draw_mesh normalizes every normal "
