@@ -1257,13 +1257,14 @@ const TextureSpec* first_texture(const Panel& p) {
 
 // ---- where kNearestMip's level is ambiguous ----
 //
-// The header lets lambda come from the snapped or the unsnapped screen positions, in double or
-// float, with or without FMA. kNearestMip reads level floor(lambda + 0.5), so where lambda lies
+// The header lets lambda come from the snapped or the unsnapped screen positions, with the
+// arithmetic in any order, with or without FMA. kNearestMip reads level floor(lambda + 0.5), so where lambda lies
 // within reach of a boundary k + 0.5 those choices read different levels, and every one of them
 // is right. The judge recomputes lambda at each pixel center from the scene (the triangle the
 // pixel shows) and its reach: how far lambda moves when each vertex coordinate moves by one
 // step of the snapping grid (a bound on snapped against unsnapped, which differ by half a
-// step at most), plus 1e-3 for float arithmetic. Such a pixel joins the lenient mask.
+// step at most), plus 1e-3 for rounding (derivatives computed in float, which m5.lod rejects,
+// stay within it on every seed tried). Such a pixel joins the lenient mask.
 
 // A triangle on the screen: positions (pixels), clip w and uv.
 struct ScreenTriangle {
