@@ -2101,7 +2101,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
     const auto [theme_topic, theme_advice] = picture_theme(s.id);
     const std::size_t first_finding = c.j.findings.size();
     const auto ref_main = ref.images.find("main");
-    const bool differs = sized && !expected.empty() && cp::exceeds_tolerance(*mine, expected, tolerance_for(s, expected));
+    // c.j.tolerance is judge()'s tolerance_for(s, expected), computed once (it ray-casts every pixel).
+    const bool differs = sized && !expected.empty() && cp::exceeds_tolerance(*mine, expected, c.j.tolerance);
     // judge() checked every function this picture is drawn with, and they pass. When the picture
     // differs and fill_triangle (TODO 5) draws m5.fill_triangle's own triangles wrong too, that is
     // the caller to fix, whatever the scene is about: every other finding would follow from it.
@@ -2343,7 +2344,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         // The difference comes from the callers, fill_triangle (TODO 5) or draw_scene (TODO 9).
         // Nearly all of it where a normal map that does not repeat is read at uv outside [0, 1]:
         // the map was read with other wrap modes than its own (repeat).
-        const NormalWrapDiff nw = normal_map_wrap_diff(s, *mine, expected, tolerance_for(s, expected));
+        const NormalWrapDiff nw = normal_map_wrap_diff(s, *mine, expected, c.j.tolerance);
         if (nw.outside >= 20 && 10 * nw.outside >= 9 * nw.strict) {
             // Nearly all of them where only one axis leaves [0, 1]: that axis's mode was not its own.
             const std::string axis = 10 * nw.only_v >= 9 * nw.outside   ? "v"
@@ -2364,7 +2365,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                        "wrap modes: sample_bilinear(level 0, uv, normal_map->wrap_u, normal_map->wrap_v)";
         }
         // Nearly all of it on normal-mapped items without a texture,
-        const NormalUvDiff nu = normal_map_uv_diff(s, *mine, expected, tolerance_for(s, expected));
+        const NormalUvDiff nu = normal_map_uv_diff(s, *mine, expected, c.j.tolerance);
         // and there as smooth as without a map where the expected image shows its bumps.
         if (nu.untextured >= 20 && 10 * nu.untextured >= 9 * nu.strict && nu.bumpy_expected >= 50 &&
             4 * nu.bumpy_mine <= nu.bumpy_expected) {
