@@ -167,8 +167,11 @@ std::vector<LevelData> t_pyramid(const LevelData& base) {
 
 struct Derivs {
     double du_dx = 0, dv_dx = 0, du_dy = 0, dv_dy = 0;
+    bool defined = false;  // false (all zero) for a degenerate triangle or B not > 0 and finite
 };
-// perspective false: the screen-space (affine) derivatives, the mistake of ignoring w.
+// perspective false: the screen-space (affine) derivatives, the mistake of ignoring w. The uv
+// are taken relative to vertex 0 (the derivatives do not change, and far from 0, at uv 1e7,
+// fewer digits cancel).
 Derivs t_derivatives(const LodCase& c, bool perspective = true) {
     const auto& s = c.screen;
     const double area = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[1].y - s[0].y) * (s[2].x - s[0].x);
@@ -183,7 +186,7 @@ Derivs t_derivatives(const LodCase& c, bool perspective = true) {
     double A[2] = {0, 0}, Ax[2] = {0, 0}, Ay[2] = {0, 0}, B = 0, Bx = 0, By = 0;
     for (int i = 0; i < 3; ++i) {
         const double q = perspective ? 1 / c.w[std::size_t(i)] : 1;
-        const double uv[2] = {c.uv[std::size_t(i)].x, c.uv[std::size_t(i)].y};
+        const double uv[2] = {c.uv[std::size_t(i)].x - c.uv[0].x, c.uv[std::size_t(i)].y - c.uv[0].y};
         for (int k = 0; k < 2; ++k) {
             A[k] += l[i] * uv[k] * q;
             Ax[k] += lx[i] * uv[k] * q;
@@ -199,6 +202,7 @@ Derivs t_derivatives(const LodCase& c, bool perspective = true) {
     d.dv_dx = (Ax[1] * B - A[1] * Bx) / (B * B);
     d.du_dy = (Ay[0] * B - A[0] * By) / (B * B);
     d.dv_dy = (Ay[1] * B - A[1] * By) / (B * B);
+    d.defined = true;
     return d;
 }
 
@@ -1266,51 +1270,30 @@ const TextureSpec* first_texture(const Panel& p) {
 // step at most), plus 1e-3 for rounding (derivatives computed in float, which m5.lod rejects,
 // stay within it on every seed tried). Such a pixel joins the lenient mask.
 
-// A triangle on the screen: positions (pixels), clip w and uv.
-struct ScreenTriangle {
-    std::array<Vec2, 3> p;
-    std::array<double, 3> w;
-    std::array<Vec2, 3> uv;
-};
-
-// lambda at (x, y) by the lesson's rule (the uv planes over 1/w, the quotient rule, rho in
-// texels of a tw x th base level); NaN where the triangle is degenerate.
-double lambda_at(const ScreenTriangle& t, double x, double y, int tw, int th) {
-    const double area2 = (t.p[1].x - t.p[0].x) * (t.p[2].y - t.p[0].y) - (t.p[1].y - t.p[0].y) * (t.p[2].x - t.p[0].x);
-    if (area2 == 0 || !std::isfinite(area2)) return std::numeric_limits<double>::quiet_NaN();
-    double a = 0, ax = 0, ay = 0, c = 0, cx = 0, cy = 0, b = 0, bx = 0, by = 0;  // u/w, v/w, 1/w
-    for (int i = 0; i < 3; ++i) {
-        const Vec2 pj = t.p[(i + 1) % 3], pk = t.p[(i + 2) % 3];
-        const double lx = -(pk.y - pj.y) / area2, ly = (pk.x - pj.x) / area2;
-        const double l = ((pk.x - pj.x) * (y - pj.y) - (pk.y - pj.y) * (x - pj.x)) / area2;
-        const double q = 1 / t.w[i], u = (t.uv[i].x - t.uv[0].x) * q, v = (t.uv[i].y - t.uv[0].y) * q;
-        a += l * u, ax += lx * u, ay += ly * u;
-        c += l * v, cx += lx * v, cy += ly * v;
-        b += l * q, bx += lx * q, by += ly * q;
-    }
-    if (!(b != 0) || !std::isfinite(b)) return std::numeric_limits<double>::quiet_NaN();
-    const double ib2 = 1 / (b * b);
-    const double ux = tw * (ax * b - a * bx) * ib2, vx = th * (cx * b - c * bx) * ib2;
-    const double uy = tw * (ay * b - a * by) * ib2, vy = th * (cy * b - c * by) * ib2;
-    return 0.5 * std::log2(std::max(ux * ux + vx * vx, uy * uy + vy * vy));
+// lambda by the lesson's rule at c's pixel (x, y), for a base level c.width x c.height; NaN where
+// the derivatives are undefined.
+double lambda_of(const LodCase& c) {
+    const Derivs d = t_derivatives(c);
+    return d.defined ? t_lambda(d.du_dx, d.dv_dx, d.du_dy, d.dv_dy, c.width, c.height)
+                     : std::numeric_limits<double>::quiet_NaN();
 }
 
-// Whether kNearestMip may read either of two levels at (x, y) of triangle t, for a base level
-// tw x th.
-bool nearest_mip_ambiguous(const ScreenTriangle& t, double x, double y, int tw, int th) {
+// Whether kNearestMip may read either of two levels at c's pixel (x, y) of its triangle, for a
+// base level c.width x c.height.
+bool nearest_mip_ambiguous(const LodCase& t) {
     int last = 0;
-    for (int n = std::max(tw, th); n > 1; n /= 2) ++last;
+    for (int n = std::max(t.width, t.height); n > 1; n /= 2) ++last;
     if (last == 0) return false;
-    const double lambda = lambda_at(t, x, y, tw, th);
-    if (std::isnan(lambda)) return false;
+    const double lambda = lambda_of(t);
+    if (!std::isfinite(lambda)) return false;
     double reach = 1e-3;
     const double step = 1.0 / 16;  // milestone 2's snapping grid (m2::kSubpixelSteps)
     for (int i = 0; i < 3; ++i) {
         for (int axis = 0; axis < 2; ++axis) {
-            ScreenTriangle moved = t;
-            (axis == 0 ? moved.p[std::size_t(i)].x : moved.p[std::size_t(i)].y) += step;
-            const double l = lambda_at(moved, x, y, tw, th);
-            reach += std::isnan(l) ? std::numeric_limits<double>::infinity() : std::abs(l - lambda);
+            LodCase moved = t;
+            (axis == 0 ? moved.screen[std::size_t(i)].x : moved.screen[std::size_t(i)].y) += step;
+            const double l = lambda_of(moved);
+            reach += std::isfinite(l) ? std::abs(l - lambda) : std::numeric_limits<double>::infinity();
         }
     }
     // Boundaries between levels that can be read: 0.5, 1.5, ..., last - 0.5 (lambda is clamped
@@ -1337,23 +1320,24 @@ void mark_mip_ambiguous(const Panel& p, raster::Mask& mask) {
     for (const ScreenTri& st : p.screen_tris) {
         const TextureSpec* tex = nearest_mip_texture(p, st.material);
         if (!tex) continue;
-        const ScreenTriangle t{{Vec2{st.screen[0].x, st.screen[0].y}, Vec2{st.screen[1].x, st.screen[1].y},
-                                Vec2{st.screen[2].x, st.screen[2].y}},
-                               st.w, st.uv};
-        const double area2 = (t.p[1].x - t.p[0].x) * (t.p[2].y - t.p[0].y) - (t.p[1].y - t.p[0].y) * (t.p[2].x - t.p[0].x);
+        LodCase t{st.screen, st.w, st.uv, 0, 0, tex->width, tex->height};
+        const auto& q = st.screen;
+        const double area2 = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
         if (area2 == 0 || !std::isfinite(area2)) continue;
-        const double x_lo = std::min({t.p[0].x, t.p[1].x, t.p[2].x}), x_hi = std::max({t.p[0].x, t.p[1].x, t.p[2].x});
-        const double y_lo = std::min({t.p[0].y, t.p[1].y, t.p[2].y}), y_hi = std::max({t.p[0].y, t.p[1].y, t.p[2].y});
+        const double x_lo = std::min({q[0].x, q[1].x, q[2].x}), x_hi = std::max({q[0].x, q[1].x, q[2].x});
+        const double y_lo = std::min({q[0].y, q[1].y, q[2].y}), y_hi = std::max({q[0].y, q[1].y, q[2].y});
         for (int y = std::max(0, int(std::floor(y_lo)) - 1); y < std::min(p.h, int(std::ceil(y_hi)) + 1); ++y) {
             for (int x = std::max(0, int(std::floor(x_lo)) - 1); x < std::min(p.w, int(std::ceil(x_hi)) + 1); ++x) {
                 const double px = x + 0.5, py = y + 0.5;
                 bool inside = true;
                 for (int i = 0; i < 3 && inside; ++i) {
-                    const Vec2 a = t.p[std::size_t(i)], b = t.p[std::size_t((i + 1) % 3)];
+                    const Vec3 a = q[std::size_t(i)], b = q[std::size_t((i + 1) % 3)];
                     const double e = ((b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x)) / (area2 > 0 ? 1 : -1);
                     inside = e >= -0.1 * std::hypot(b.x - a.x, b.y - a.y);
                 }
-                if (inside && nearest_mip_ambiguous(t, px, py, tex->width, tex->height)) mask.set(p.x0 + x, p.y0 + y);
+                t.x = px;
+                t.y = py;
+                if (inside && nearest_mip_ambiguous(t)) mask.set(p.x0 + x, p.y0 + y);
             }
         }
     }
@@ -1367,7 +1351,7 @@ void mark_mip_ambiguous(const Panel& p, raster::Mask& mask) {
     auto project = [&](Vec3 q) {
         const Vec3 d = q - p.camera.eye;
         const double z = raster::dot(d, b.f);
-        return Vec2{(raster::dot(d, b.r) / (z * t * aspect) + 1) * p.w / 2, (1 - raster::dot(d, b.u) / (z * t)) * p.h / 2};
+        return Vec3{(raster::dot(d, b.r) / (z * t * aspect) + 1) * p.w / 2, (1 - raster::dot(d, b.u) / (z * t)) * p.h / 2, 0};
     };
     for (int y = 0; y < p.h; ++y) {
         for (int x = 0; x < p.w; ++x) {
@@ -1393,10 +1377,14 @@ void mark_mip_ambiguous(const Panel& p, raster::Mask& mask) {
                 }
             }
             for (std::size_t i = 1; i + 1 < out.size(); ++i) {
-                const ScreenTriangle st{{project(out[0].q), project(out[i].q), project(out[i + 1].q)},
-                                        {out[0].z, out[i].z, out[i + 1].z},
-                                        {out[0].uv, out[i].uv, out[i + 1].uv}};
-                if (nearest_mip_ambiguous(st, x + 0.5, y + 0.5, tex->width, tex->height)) {
+                const LodCase st{{project(out[0].q), project(out[i].q), project(out[i + 1].q)},
+                                 {out[0].z, out[i].z, out[i + 1].z},
+                                 {out[0].uv, out[i].uv, out[i + 1].uv},
+                                 x + 0.5,
+                                 y + 0.5,
+                                 tex->width,
+                                 tex->height};
+                if (nearest_mip_ambiguous(st)) {
                     mask.set(p.x0 + x, p.y0 + y);
                     break;
                 }
