@@ -1124,6 +1124,10 @@ void judge_shadow(Ctx& c) {
             topic = "shadow bias";
             why = ": this is case 3 with the direction passed 3 times as long; c = dot(n, -normalize(direction)) = 0.2 "
                   "still, so the slope term keeps it lit";
+        } else if (i == 22 || i == 23) {
+            why = ": here d - bias / (2r) EQUALS the stored depth (" + num(round4(t_shadow_depth(map, k))) +
+                  (i == 23 ? ", with the bias 0.25 / (2r) = 0.0625 taken off d = 0.5625" : ", with no bias") +
+                  "), and a tie is lit: the point is in shadow only when d - bias / (2r) > stored, strictly";
         } else if (k.pcf) {
             why = ": with PCF the factor is the lit fraction of the 3x3 texels around the one p falls in (a texel outside "
                   "the map, or never drawn, is lit)";

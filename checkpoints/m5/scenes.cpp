@@ -1293,6 +1293,10 @@ std::vector<ShadowCase> shadow_cases() {
         // On the floor with no bias, texel (3, 0): d = 0.5 exactly (every step of the light's
         // matrix is exact here), the very float the floor stored. A tie is lit: shadowed needs >.
         {{-1.5, 0, -1.5}, up, 0, 0, false},
+        // The same tie under a bias: d = 0.5625 and bias / (2r) = 0.25 / 4 = 0.0625, so
+        // d - bias / (2r) = 0.5 exactly, and so is d > stored + bias / (2r) (every number is a
+        // short binary fraction): lit, whichever side the bias is written on.
+        {{-1.5, -0.25, -1.5}, up, 0.25, 0, false},
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m5.shadow_lookup");
