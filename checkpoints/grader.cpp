@@ -413,8 +413,10 @@ std::string checkpoint_output(const json& v, const std::string& why) {
         for (const std::string& a : advice) o << "  " << a << "\n";
     }
     if (!why.empty()) o << "\n" << why;
-    o << std::fixed << std::setprecision(3) << "\nrender time: yours " << v.value("student_ms", 0.0)
-      << " ms, reference " << v.value("reference_ms", 0.0) << " ms";
+    if (v.contains("student_ms")) {  // (nothing was timed where nothing was built)
+        o << std::fixed << std::setprecision(3) << "\nrender time: yours " << v.value("student_ms", 0.0)
+          << " ms, reference " << v.value("reference_ms", 0.0) << " ms";
+    }
     if (v.value("numbers_only", false)) {
         o << "\nno picture to compare: this checkpoint judges numbers";
     } else if (v.value("has_metrics", false)) {
@@ -447,6 +449,8 @@ int cmd_report(const std::vector<std::string>& args) {
         const auto compile = read_status(mdir / "compile.status");
         const bool compiled = compile.count("result") && compile.at("result") == "exited" && compile.at("exit") == "0";
         std::string compile_log = read_text(mdir / "compile.log");
+        // A file the grader could not find is not the compiler's verdict: say which it is.
+        const std::string not_built = compile_log.rfind("The submission has no", 0) == 0 ? "missing file" : "compile error";
         if (compile_log.size() > 20000) compile_log = compile_log.substr(0, 20000) + "\n[... cut]";
         // The trusted list of checkpoints this milestone was graded on (written by the grader
         // from `raster_grade ids` and the hidden ones): a missing verdict scores 0.
@@ -469,7 +473,9 @@ int cmd_report(const std::vector<std::string>& args) {
                 v = {{"status", "error"},
                      {"title", cname},
                      {"findings", {compiled ? "[grader] no verdict for this checkpoint" :
-                                              "[compile] your code did not compile: see the compile log"}}};
+                                              not_built == "missing file"
+                                              ? "[missing file] the grader found no file of this milestone to build: see the test \"" + m + " compiles\""
+                                              : "[compile] your code did not compile: see the compile log"}}};
             }
             const double max = listed_points >= 0 ? listed_points : max_points(r, cname, v);
             std::string why;
@@ -484,7 +490,7 @@ int cmd_report(const std::vector<std::string>& args) {
                 per_milestone[m].second += max;
             }
             std::string output = checkpoint_output(v, why);
-            if (!compiled) output = "compile error: the compiler's output is in the test \"" + m + " compiles\"\n" + output;
+            if (!compiled) output = not_built + ": the reason is in the test \"" + m + " compiles\"\n" + output;
             const bool hidden = is_hidden;
             tests.push_back({{"name", m + " " + cname},
                              {"score", got},
@@ -565,11 +571,11 @@ int cmd_report(const std::vector<std::string>& args) {
                          {"score", 0},
                          {"max_score", 0},
                          {"status", compiled ? "passed" : "failed"},
-                         {"output", compiled ? std::string("compiled") : "compile error:\n" + compile_log},
+                         {"output", compiled ? std::string("compiled") : not_built + ":\n" + compile_log},
                          {"visibility", "visible"}});
         if (!compiled) {
             sections << "<section id=\"" << m << "-compile\"><h3>" << m
-                     << ": compile error</h3><pre>" << html_escape(compile_log) << "</pre></section>\n";
+                     << ": " << not_built << "</h3><pre>" << html_escape(compile_log) << "</pre></section>\n";
         }
     }
     std::ostringstream summary;
@@ -658,6 +664,8 @@ int cmd_class(const std::vector<std::string>& args) {
                     concepts_of[name][output.substr(at + 4, end - at - 4)]++;
                 } else if (output.rfind("compile error", 0) == 0) {
                     concepts_of[name]["compile error"]++;
+                } else if (output.rfind("missing file", 0) == 0) {
+                    concepts_of[name]["missing file"]++;
                 }
             }
         }

@@ -134,6 +134,28 @@ case "$case_name" in
     [ "$(score "$r" m3)" = "$(max_score "$r" m3)" ] || fail "m3 lost points for m2's compile error"
     grep -q "not C++" "$r" || fail "the compile log is not in results.json"
     ;;
+  missing_file)
+    # A file the grader cannot take is a missing file, told to the student with what was found:
+    # two lines.cpp equally near the top (none taken), a transforms.cpp in other letter case.
+    make_submission "$work/sub"
+    mkdir -p "$work/sub/copy/milestone1_lines"
+    cp "$work/sub/milestone1_lines/lines.cpp" "$work/sub/copy/milestone1_lines/lines.cpp"
+    mkdir -p "$work/sub/other" && mv "$work/sub/milestone1_lines/lines.cpp" "$work/sub/other/lines.cpp"
+    mv "$work/sub/copy/milestone1_lines/lines.cpp" "$work/sub/copy/lines.cpp"
+    mv "$work/sub/milestone3_transforms/transforms.cpp" "$work/sub/milestone3_transforms/Transforms.cpp"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 \
+      --only m1.octant_1,m2.top_left,m3.matrix_ops "$work/sub"
+    r=$work/out/results.json
+    [ "$(score "$r" m2)" = "$(max_score "$r" m2)" ] || fail "m2 lost points for the other milestones' missing files"
+    python3 - "$r" <<'PY' || fail "the missing files are not told as such (results.json above)"
+import json, sys
+tests = {t["name"]: t["output"] for t in json.load(open(sys.argv[1]))["tests"]}
+m1, m3 = tests["m1 compiles"], tests["m3 compiles"]
+assert m1.startswith("missing file:") and "other/lines.cpp" in m1 and "copy/lines.cpp" in m1, m1
+assert m3.startswith("missing file:") and "milestone3_transforms/Transforms.cpp" in m3, m3
+assert tests["m1 m1.octant_1"].startswith("missing file:") and "render time" not in tests["m1 m1.octant_1"]
+PY
+    ;;
   bugs-m*)
     # Every deliberate bug loses the points of every checkpoint it names (and is graded on them),
     # or, where the only sign of it is a count the render measures about itself (no_clipping:
