@@ -450,7 +450,9 @@ int cmd_report(const std::vector<std::string>& args) {
         const bool compiled = compile.count("result") && compile.at("result") == "exited" && compile.at("exit") == "0";
         std::string compile_log = read_text(mdir / "compile.log");
         // A file the grader could not find is not the compiler's verdict: say which it is.
-        const std::string not_built = compile_log.rfind("The submission has no", 0) == 0 ? "missing file" : "compile error";
+        const std::string not_built = compile_log.rfind("The submission has no", 0) == 0     ? "missing file"
+                                      : compile_log.rfind("Refused before linking", 0) == 0 ? "code refused"
+                                                                                            : "compile error";
         if (compile_log.size() > 20000) compile_log = compile_log.substr(0, 20000) + "\n[... cut]";
         // The trusted list of checkpoints this milestone was graded on (written by the grader
         // from `raster_grade ids` and the hidden ones): a missing verdict scores 0.
@@ -629,6 +631,7 @@ int cmd_class(const std::vector<std::string>& args) {
         std::string who;
         double score = 0;
         std::map<std::string, double> points, milestone;
+        std::string unbuilt;  // "m2: compile error, m4: missing file"
     };
     std::vector<Row> rows;
     std::vector<std::string> columns;  // checkpoint names, in first-seen order
@@ -649,6 +652,11 @@ int cmd_class(const std::vector<std::string>& args) {
         row.score = j.value("score", 0.0);
         for (const json& t : j.value("tests", json::array())) {
             const std::string name = t.value("name", std::string());
+            if (name.size() > 9 && name.ends_with(" compiles") && t.value("status", std::string()) == "failed") {
+                const std::string output = t.value("output", std::string());
+                row.unbuilt += (row.unbuilt.empty() ? "" : ", ") + name.substr(0, name.find(' ')) + ": " +
+                               output.substr(0, std::min(output.find(':'), output.find('\n')));
+            }
             if (t.value("max_score", 0.0) <= 0) continue;
             if (!max_of.count(name)) columns.push_back(name);
             max_of[name] = t.value("max_score", 0.0);
@@ -662,10 +670,9 @@ int cmd_class(const std::vector<std::string>& args) {
                 if (at != std::string::npos) {
                     const auto end = output.find(']', at);
                     concepts_of[name][output.substr(at + 4, end - at - 4)]++;
-                } else if (output.rfind("compile error", 0) == 0) {
-                    concepts_of[name]["compile error"]++;
-                } else if (output.rfind("missing file", 0) == 0) {
-                    concepts_of[name]["missing file"]++;
+                } else if (const auto colon = output.find(": the reason is in the test"); colon != std::string::npos &&
+                                                                                      colon < output.find('\n')) {
+                    concepts_of[name][output.substr(0, colon)]++;  // compile error, missing file, code refused
                 }
             }
         }
@@ -689,8 +696,17 @@ int cmd_class(const std::vector<std::string>& args) {
     std::ofstream html(out / "class.html");
     html << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>Class results</title>" << kStyle
          << "</head><body><h1>Class results</h1><p>" << rows.size()
-         << " submission(s). The checkpoints the class fails most come first, with the concept their first "
-            "finding names.</p><table><tr><th>checkpoint</th><th>failed by</th><th>concepts</th></tr>\n";
+         << " submission(s): their points first, then the checkpoints the class fails most, with the concept their "
+            "first finding names.</p><h2>Submissions</h2><table><tr><th>submission</th><th>score</th>";
+    for (const std::string& m : milestones) html << "<th>" << html_escape(m) << "</th>";
+    html << "<th>not built</th></tr>\n";
+    for (const Row& r : rows) {
+        html << "<tr><td><a href=\"" << html_escape(r.who) << "/report.html\">" << html_escape(r.who) << "</a></td><td>"
+             << fmt_points(r.score) << "</td>";
+        for (const std::string& m : milestones) html << "<td>" << fmt_points(r.milestone.count(m) ? r.milestone.at(m) : 0) << "</td>";
+        html << "<td>" << html_escape(r.unbuilt) << "</td></tr>\n";
+    }
+    html << "</table><h2>Checkpoints</h2><table><tr><th>checkpoint</th><th>failed by</th><th>concepts</th></tr>\n";
     for (const std::string& c : order) {
         std::string concepts;
         std::vector<std::pair<int, std::string>> byc;
@@ -699,15 +715,6 @@ int cmd_class(const std::vector<std::string>& args) {
         for (const auto& [n, k] : byc) concepts += (concepts.empty() ? "" : ", ") + k + " (" + std::to_string(-n) + ")";
         html << "<tr><td>" << html_escape(c) << "</td><td>" << fails[c] << " of " << rows.size() << "</td><td>"
              << html_escape(concepts) << "</td></tr>\n";
-    }
-    html << "</table><h2>Submissions</h2><table><tr><th>submission</th><th>score</th>";
-    for (const std::string& m : milestones) html << "<th>" << html_escape(m) << "</th>";
-    html << "</tr>\n";
-    for (const Row& r : rows) {
-        html << "<tr><td><a href=\"" << html_escape(r.who) << "/report.html\">" << html_escape(r.who) << "</a></td><td>"
-             << fmt_points(r.score) << "</td>";
-        for (const std::string& m : milestones) html << "<td>" << fmt_points(r.milestone.count(m) ? r.milestone.at(m) : 0) << "</td>";
-        html << "</tr>\n";
     }
     html << "</table>" << cp::kPictureLoadMarker << "</body></html>\n";
     std::cout << "class results: " << (out / "class.csv").string() << ", " << (out / "class.html").string() << "\n";
