@@ -286,7 +286,9 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
         findings.insert(findings.begin(),
                         {"runaway loop", "your code was stopped after " + std::to_string(kStrayWriteBudget) +
                                              " writes outside the image: a loop runs past its end point. "
-                                             "Check the step signs and the loop's stop condition"});
+                                             "Check the step signs and the loop's stop condition. The calls after "
+                                             "that write never ran: a finding below about what they compute (nan, "
+                                             "\"not drawn\", \"not written yet\") is about code that was not reached"});
     }
     if (!judgement.upstream_failed) {
         const std::vector<Finding> nothing = nothing_drawn_findings(suite, student, reference);
