@@ -166,8 +166,10 @@ std::vector<Finding> nothing_drawn_findings(const Suite& suite, const Artifacts&
                           plural(double(ref.writes), "pixel") + " with it on this scene";
         Finding finding{"nothing drawn", msg};
         finding.todo = f ? todo_label(f->todos) : "";
-        finding.hint = (finding.todo.empty() ? "this TODO" : finding.todo) + " is not written yet (or `" + name +
-                       "` returns before drawing anything): fill it in, following its section in the lesson";
+        const bool several = finding.todo.rfind("TODOs", 0) == 0;
+        finding.hint = (finding.todo.empty() ? "this TODO" : finding.todo) + (several ? " are" : " is") +
+                       " not written yet, or `" + name + "` returns before drawing anything (on this scene the "
+                       "reference draws at least one pixel with it): fill it in, following its section in the lesson";
         out.push_back(finding);
     }
     return out;
