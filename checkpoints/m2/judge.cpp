@@ -643,8 +643,16 @@ void judge_numbers(const Scene& s, const cp::Artifacts& art, cp::Judgement& j) {
                                          "TODO 1", snap_hint));
         } else if (ok && (value(key + "x") != std::round(p.x * 16) || value(key + "y") != std::round(p.y * 16))) {
             std::ostringstream m;
+            // Which part of the rule: a half (x * 16 ends in .5) goes away from zero; otherwise the nearest.
+            auto off_by_half = [&](double c, double got) {
+                const double t = c * 16;
+                return t - std::floor(t) == 0.5 && got != std::round(t) && std::abs(got - t) == 0.5;
+            };
+            const bool halves = off_by_half(p.x, value(key + "x")) || off_by_half(p.y, value(key + "y"));
             m << "snap" << str(p) << " gave (" << value(key + "x") << ", " << value(key + "y") << "), expected ("
-              << std::round(p.x * 16) << ", " << std::round(p.y * 16) << ") sixteenths (nearest, not truncated)";
+              << std::round(p.x * 16) << ", " << std::round(p.y * 16) << ") sixteenths "
+              << (halves ? "(a half goes AWAY from zero, as std::llround does: -0.5 sixteenths is -1, not 0)"
+                         : "(the nearest sixteenth, not truncated)");
             j.findings.push_back(finding("snap", m.str(), "TODO 1", snap_hint));
         }
     }

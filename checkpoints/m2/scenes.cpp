@@ -383,6 +383,10 @@ Scene vary(const Scene& pub, Rng& rng) {
         for (Vec2& v : t.v) v = sym(v);
     }
     for (Vec2& p : s.numbers.snaps) p = sym(p);
+    // Moved and mirrored, the public scene's negative half may have become a positive one: keep
+    // one negative half on each axis (-0.5 and -16.5 sixteenths, which std::llround sends away
+    // from zero and floor(x + 0.5) toward it).
+    if (id == "m2.edge_and_box") s.numbers.snaps.push_back({-0.03125, -1.03125});
     for (auto& box : s.numbers.boxes) {
         for (Vec2& v : box) v = sym(v);
     }
