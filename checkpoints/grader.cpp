@@ -669,10 +669,8 @@ int cmd_class(const std::vector<std::string>& args) {
                 const auto at = output.find("\n  [");
                 if (at != std::string::npos) {
                     const auto end = output.find(']', at);
+                    // (an unbuilt milestone's checkpoints too: "[compile]", "[missing file]")
                     concepts_of[name][output.substr(at + 4, end - at - 4)]++;
-                } else if (const auto colon = output.find(": the reason is in the test"); colon != std::string::npos &&
-                                                                                      colon < output.find('\n')) {
-                    concepts_of[name][output.substr(0, colon)]++;  // compile error, missing file, code refused
                 }
             }
         }
