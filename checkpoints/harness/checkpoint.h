@@ -138,6 +138,10 @@ struct Judgement {
     // picture rests on that TODO, so the harness adds none of its own (no "drew nothing: TODO
     // 11 is not written yet" when the matrices put every vertex off screen).
     bool upstream_failed = false;
+    // Functions of the code under test that drew nothing on this scene though the judge knows
+    // they ran (the work they counted is not zero: m3's draw_model transformed and clipped,
+    // then every edge was clipped away). The harness then does not say "not written yet".
+    std::vector<std::string> ran = {};
 };
 
 // One function a student writes, as the checkpoints see it: its name (as the render half

@@ -146,7 +146,10 @@ Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
 
 // One finding per function that the reference drew with on this scene and the code under test
 // called without drawing anything: most often a TODO not written yet.
-std::vector<Finding> nothing_drawn_findings(const Suite& suite, const Artifacts& student, const Artifacts& reference) {
+// A function in `ran` (Judgement::ran) is said to have drawn nothing though it ran, without the
+// "not written yet" hint, and after the judge's own findings, which say why.
+std::vector<Finding> nothing_drawn_findings(const Suite& suite, const Artifacts& student, const Artifacts& reference,
+                                            const std::vector<std::string>& ran, bool want_ran) {
     std::vector<std::string> names;  // the milestone's TODO order first, then any other
     for (const StudentFunction& f : suite.functions) names.push_back(f.name);
     for (const auto& [name, t] : reference.trace) {
@@ -159,7 +162,20 @@ std::vector<Finding> nothing_drawn_findings(const Suite& suite, const Artifacts&
         const FunctionTrace& ref = ref_it->second;
         const auto it = student.trace.find(name);
         if (ref.writes == 0 || it == student.trace.end() || it->second.calls == 0 || it->second.writes > 0) continue;
+        const bool did_run = std::find(ran.begin(), ran.end(), name) != ran.end();
+        if (did_run != want_ran) continue;
         const StudentFunction* f = find_function(suite, name);
+        if (did_run) {
+            Finding finding{"nothing drawn",
+                            function_label(suite, name) + " ran (the work it counted is not zero) but drew nothing" +
+                                (it->second.stray_writes > 0 ? " inside the image" : "") + " in " +
+                                plural(double(it->second.calls), "call") + "; the reference draws " +
+                                plural(double(ref.writes), "pixel") + " with it on this scene, so its TODO is "
+                                "written but what it computed put nothing on screen"};
+            finding.todo = f ? todo_label(f->todos) : "";
+            out.push_back(finding);
+            continue;
+        }
         std::string msg = function_label(suite, name) + " drew nothing" +
                           (it->second.stray_writes > 0 ? " inside the image" : "") + " in " +
                           plural(double(it->second.calls), "call") + "; the reference draws " +
@@ -293,8 +309,10 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
                                              "\"not drawn\", \"not written yet\") is about code that was not reached"});
     }
     if (!judgement.upstream_failed) {
-        const std::vector<Finding> nothing = nothing_drawn_findings(suite, student, reference);
+        const std::vector<Finding> nothing = nothing_drawn_findings(suite, student, reference, judgement.ran, false);
         findings.insert(findings.begin(), nothing.begin(), nothing.end());
+        const std::vector<Finding> ran = nothing_drawn_findings(suite, student, reference, judgement.ran, true);
+        findings.insert(findings.end(), ran.begin(), ran.end());
     }
     if (!expected_in.problem.empty()) findings.push_back({"setup", expected_in.problem});
 

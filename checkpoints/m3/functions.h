@@ -62,7 +62,7 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"projection", {"TODO 5", "OpenGL's matrices; invalid arguments give the zero matrix"}},
         {"degrees", {"TODO 5", "perspective() takes degrees: convert to radians before std::tan"}},
         {"perspective divide", {"TODO 6", "divide x, y and z by w before the viewport map"}},
-        {"viewport", {"TODO 6", "y_pixel = (1 - y_ndc) / 2 * H: rows grow downward"}},
+        {"viewport", {"TODO 6", "divide by w, then x_pixel = (x_ndc + 1) / 2 * W and y_pixel = (1 - y_ndc) / 2 * H: rows grow downward"}},
         {"clipping", {"TODO 7", "clip against all six planes -w <= x, y, z <= w, in clip space"}},
         {"near plane", {"TODO 7", "clip against z >= -w too: it removes everything at or behind the camera"}},
         {"clip space", {"TODO 11", "clip the clip-space vertices first, then divide what survives"}},

@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 
+#include "harness/diagnosis.h"
 #include "m3/render.h"
 #include "m3/scenes.h"
 #include "raster/io.h"
@@ -390,7 +391,15 @@ void judge_group(Group g, Ctx& c) {
             for (const auto& [key, call] : bad) {
                 c.matrix(key, "projection", std::string("TODO 5: ") + call + " has invalid arguments and must give the zero matrix");
             }
-            c.point("s0", "viewport", "TODO 6: to_screen((0, 0, 0, 1)) in 100 x 50 pixels is the center");
+            {
+                // A NaN here comes from dividing by something that is 0 for this point (its z),
+                // not by w, which is 1.
+                const Vec3 s0 = vec3(v, "s0");
+                const bool finite = std::isfinite(s0.x) && std::isfinite(s0.y) && std::isfinite(s0.z);
+                c.point("s0", finite ? "viewport" : "perspective divide",
+                        std::string("TODO 6: to_screen((0, 0, 0, 1)) in 100 x 50 pixels is the center") +
+                            (finite ? "" : " (its w is 1, so the divide changes nothing; a NaN means a division by its x, y or z, which are 0)"));
+            }
             const Vec3 s1 = vec3(v, "s1");
             if (!same3(s1, {62.5, 18.75, 0.1})) {
                 if (close(s1.x, 75)) {
@@ -424,8 +433,9 @@ void judge_group(Group g, Ctx& c) {
                 } else if (!touching.empty()) {
                     c.add("inside test", "TODO 7a: " + what + ". The vertex " + touching +
                                              ", and the six planes are closed (-w <= x <= w): a vertex with d = 0 is "
-                                             "INSIDE, so keep a when da >= 0 (not da > 0) and look for a crossing when "
-                                             "(da >= 0) != (db >= 0). Where the triangle only touches the view volume at "
+                                             "INSIDE. Keep a when da >= 0, and add a crossing exactly when (da >= 0) != "
+                                             "(db >= 0); with > in place of >= in either test, the vertex on the plane is "
+                                             "lost or its crossing is not added. Where the triangle only touches the view volume at "
                                              "that vertex, what is inside is that one point, and the rule returns it "
                                              "(three times: a polygon of no area)");
                 } else {
@@ -472,8 +482,13 @@ void judge_group(Group g, Ctx& c) {
             if (!ok) {
                 std::string got;
                 for (int k = 0; k < int(std::max(0.0, std::min(16.0, get(v, "order.n")))); ++k) got += (k ? " " : "") + num(get(v, "order." + std::to_string(k)));
-                c.add("painter", "TODO 10: painter_order gave [" + got + "], expected [4 1 3 0 2]: mean view-space z "
-                                 "-7, -5, -3.5, -2, -0.6, farthest (most negative) first");
+                const bool reversed = got == "2 0 3 1 4";
+                c.add("painter", "TODO 10: painter_order gave [" + got + "], expected [4 1 3 0 2]: the mean view-space z "
+                                 "of triangles 0 to 4 is -2, -5, -0.6, -3.5 and -7, and the farthest (most negative z) "
+                                 "comes first" +
+                                     std::string(reversed ? "; yours is the exact reverse, nearest first: the camera "
+                                                            "looks down -z, so a smaller z is farther away"
+                                                          : ""));
             }
             break;
         }
@@ -537,6 +552,30 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
         camera_ok &= c.matrix(key + ".proj", "projection", std::string("TODO 5: the ") + (s.panels[p].camera.ortho ? "orthographic" : "perspective") +
                                                          " matrix of this scene (m3.projection has the details)");
     }
+    // The order of the product (render.cpp, draw_model_use): a test triangle drawn with a
+    // move as the model matrix and a halving as the view. The matrix functions it is drawn
+    // with pass their own checks (else the judge says "fix TODO N first"), so a triangle in
+    // another place comes from how draw_model combines the matrices.
+    const double order_mine = get(c.mine, "use.order.x"), order_ref = get(c.ref, "use.order.x");
+    if (get(c.ref, "use.order.n") > 0 && std::abs(order_mine - order_ref) > 2) {
+        std::string list;
+        for (Group g : prerequisite_groups(s)) {
+            const std::string id = prerequisite_checkpoint(g);
+            if (list.find(id) == std::string::npos) list += (list.empty() ? "" : ", ") + id;
+        }
+        cp::Finding f{"pipeline",
+                      "the matrix functions this picture is drawn with " + std::string(cp::kPassOwnChecks) + " (" +
+                          list + "), yet draw_model puts a test triangle in the wrong place: drawn with model = a move "
+                          "right by 0.5, view = a halving and projection = identity on a 48-pixel image, its pixels " +
+                          (get(c.mine, "use.order.n") > 0 ? "centre on x = " + num(order_mine) : std::string("are nowhere")) +
+                          " where the reference's centre on x = " + num(order_ref) +
+                          ". Each clip-space position is projection * view * model * p: the rightmost matrix acts "
+                          "first, so the model matrix stands next to the point. (model * view * projection halves "
+                          "the move as well and moves the triangle to x = 36.)"};
+        f.todo = "TODO 11";
+        f.hint = "clip = projection * view * model * p: read a product right to left";
+        c.j.findings.push_back(f);
+    }
     // The stage counts.
     static const char* kStats[][3] = {
         {"vertices_transformed", "pipeline", "vertices transformed (each position once)"},
@@ -568,6 +607,13 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
                 why = ": every vertex is inside the view volume, so nothing needs clipping";
             }
             c.add(st[1], "TODO 11: " + num(mine) + " " + st[2] + ", expected " + num(ref) + why);
+        }
+    }
+    // draw_model ran (it counted work) even if it drew nothing: not "TODO 11 not written yet".
+    for (const auto& st : kStats) {
+        if (get(c.mine, std::string("stats.") + st[0]) != 0) {
+            c.j.ran.push_back("draw_model");
+            break;
         }
     }
     // The clipper on the scene's own triangles (scenes with one panel and small items).

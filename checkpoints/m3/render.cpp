@@ -343,6 +343,32 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
 // callee (both of those functions pass their own checks when it looks).
 void draw_model_use(const Scene& s, cp::Artifacts& out) {
     const Mat4 id = m3::identity();
+    {
+        // The order of the product: model = a move right by 0.5, view = a uniform halving,
+        // projection = identity. projection * view * model puts the triangle's middle at
+        // x = 0.25 (pixel 30 of 48); model * view * projection at x = 0.5 (pixel 36), twice as
+        // wide.
+        Mat4 model = id, view = id;
+        model.m[0][3] = 0.5;
+        view.m[0][0] = view.m[1][1] = view.m[2][2] = 0.5;
+        m3::Model tri;
+        tri.positions = {{-0.3, -0.3, 0}, {0.3, -0.3, 0}, {0, 0.3, 0}};
+        tri.triangles = {{0, 1, 2}};
+        tri.face_colors = {{250, 250, 250}};
+        raster::Image img = cp::guarded_image(48, 48);
+        cp::traced(*g_out, "draw_model", img, [&] { return m3::draw_model(img, tri, model, view, id, {true, false, false, false, false}, {}); });
+        double n = 0, sum_x = 0;
+        for (int y = 0; y < img.height(); ++y) {
+            for (int x = 0; x < img.width(); ++x) {
+                if (img.at(x, y) == raster::Color{}) continue;
+                n += 1;
+                sum_x += x + 0.5;
+            }
+        }
+        out.values["use.order.n"] = n;
+        out.values["use.order.x"] = n > 0 ? sum_x / n : -1;
+        out.stray_writes += img.stray_writes();
+    }
     if (s.cull) {
         for (int way = 0; way < 2; ++way) {
             m3::Model tri;
