@@ -570,8 +570,9 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
                           (get(c.mine, "use.order.n") > 0 ? "centre on x = " + num(order_mine) : std::string("are nowhere")) +
                           " where the reference's centre on x = " + num(order_ref) +
                           ". Each clip-space position is projection * view * model * p: the rightmost matrix acts "
-                          "first, so the model matrix stands next to the point. (model * view * projection halves "
-                          "the move as well and moves the triangle to x = 36.)"};
+                          "first, so the model matrix stands next to the point: the move, then the halving, puts the "
+                          "triangle at x = 30. (model * view * projection halves the triangle but not the move, "
+                          "which puts it at x = 36.)"};
         f.todo = "TODO 11";
         f.hint = "clip = projection * view * model * p: read a product right to left";
         c.j.findings.push_back(f);
