@@ -13,6 +13,10 @@ for gone in solutions tools/grading checkpoints/grader.cpp checkpoints/m1/bugs c
   [ ! -e "$h/$gone" ] || { echo "the handout has $gone"; exit 1; }
 done
 [ -z "$(find "$h" -name '*.bug' -o -name '*.variant' -o -name 'hidden.json')" ] || { echo "the handout has bugs, variants or hidden checkpoints"; exit 1; }
+# Its README is the students' part of the course's: no sections for instructors or maintainers.
+grep -q "students' copy" "$h/README.md" || { echo "the handout's README does not say what it is"; exit 1; }
+grep -q "## For students" "$h/README.md" || { echo "the handout's README lost its section for students"; exit 1; }
+! grep -qE "^## For (instructors|maintainers)" "$h/README.md" || { echo "the handout's README keeps a section for instructors or maintainers"; exit 1; }
 # No file of the handout is a solution file, under any name.
 for s in "$root"/solutions/*/*.cpp; do
   sum=$(sha256sum <"$s")
