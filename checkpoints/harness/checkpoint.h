@@ -67,6 +67,9 @@ struct Artifacts {
 // partial picture; the harness turns that into a finding instead of a hang.
 inline constexpr long long kStrayWriteBudget = 1'000'000;
 inline constexpr const char* kRunawayKey = "runaway";
+// values[kRunawayInKey + function] = which call of that function (1 = its first on the scene)
+// was running when the budget ran out; set by traced(), innermost call first.
+inline constexpr const char* kRunawayInKey = "runaway.in.";
 
 // What a checkpoint that fails only on the counts of the student's own program says (console,
 // summary and report): why `make check` fails it though its pictures are right, and what a
@@ -232,9 +235,12 @@ public:
     TracedCall& operator=(const TracedCall&) = delete;
 
 private:
+    Artifacts* out_;
     FunctionTrace* entry_;
+    const std::string* name_;
     const raster::Image* img_;
     long long writes0_ = 0, strays0_ = 0;
+    int uncaught0_ = 0;  // std::uncaught_exceptions() at the call: more at its end means it threw
 };
 
 template <typename Fn>

@@ -270,7 +270,7 @@ Artifacts verifiable_part(const Artifacts& student, const Artifacts& reference) 
         t.stray_writes = it == reference.trace.end() ? 0 : it->second.stray_writes;
     }
     a.stopped_call.stray_writes = 0;
-    a.values.erase(kRunawayKey);
+    std::erase_if(a.values, [](const auto& kv) { return kv.first == kRunawayKey || kv.first.rfind(kRunawayInKey, 0) == 0; });
     for (auto& [key, value] : a.values) {
         const bool counted = key.find(".stats.") != std::string::npos || key.find("capacity") != std::string::npos ||
                              key.ends_with(".builds");  // milestone 5's sample() counts its own pyramid builds
@@ -301,12 +301,24 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
     }
     std::vector<Finding>& findings = judgement.findings;
     if (student.values.count(kRunawayKey)) {
-        findings.insert(findings.begin(),
-                        {"runaway loop", "your code was stopped after " + std::to_string(kStrayWriteBudget) +
-                                             " writes outside the image: a loop runs past its end point. "
-                                             "Check the step signs and the loop's stop condition. The calls after "
-                                             "that write never ran: a finding below about what they compute (nan, "
-                                             "\"not drawn\", \"not written yet\") is about code that was not reached"});
+        std::string where = "your code";
+        const auto in = student.values.lower_bound(kRunawayInKey);
+        Finding runaway{"runaway loop", ""};
+        if (in != student.values.end() && in->first.rfind(kRunawayInKey, 0) == 0) {
+            const std::string name = in->first.substr(std::string(kRunawayInKey).size());
+            const long long call = static_cast<long long>(in->second);
+            where = function_label(suite, name) + ", in its " +
+                    (call <= 1 ? std::string("first call on this scene,")
+                               : "call number " + std::to_string(call) + " on this scene (" +
+                                     plural(double(call - 1), "earlier call") + " returned),");
+            const StudentFunction* f = find_function(suite, name);
+            runaway.todo = f ? todo_label(f->todos) : "";
+        }
+        runaway.message = where + " was stopped after " + std::to_string(kStrayWriteBudget) +
+                          " writes outside the image: a loop runs past its end point. Check the loop's bounds and "
+                          "its stop condition (for a line, the step signs). The calls after that write never ran: a finding below about "
+                          "what they compute (nan, \"not drawn\", \"not written yet\") is about code that was not reached";
+        findings.insert(findings.begin(), runaway);
     }
     if (!judgement.upstream_failed) {
         const std::vector<Finding> nothing = nothing_drawn_findings(suite, student, reference, judgement.ran, false);

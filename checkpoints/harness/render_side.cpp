@@ -4,6 +4,7 @@
 // runs a student's code.
 #include <algorithm>
 #include <chrono>
+#include <exception>
 #include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
@@ -40,10 +41,12 @@ Running& running() {
 
 }  // namespace
 
-TracedCall::TracedCall(Artifacts& out, std::string_view function, const raster::Image* img) : img_(img) {
+TracedCall::TracedCall(Artifacts& out, std::string_view function, const raster::Image* img)
+    : out_(&out), img_(img), uncaught0_(std::uncaught_exceptions()) {
     auto it = out.trace.find(function);
     if (it == out.trace.end()) it = out.trace.emplace(std::string(function), FunctionTrace{}).first;
     entry_ = &it->second;
+    name_ = &it->first;
     if (img_ != nullptr) {
         writes0_ = img_->writes();
         strays0_ = img_->stray_writes();
@@ -66,6 +69,15 @@ TracedCall::~TracedCall() {
     if (img_ != nullptr) {
         entry_->writes += img_->writes() - writes0_;
         entry_->stray_writes += img_->stray_writes() - strays0_;
+    }
+    // Left by an exception (the stray-write budget spent, see render_guarded): remember which
+    // call it was, unless a call inside this one already did.
+    if (std::uncaught_exceptions() > uncaught0_) {
+        const auto& values = out_->values;
+        const auto it = values.lower_bound(kRunawayInKey);
+        if (it == values.end() || it->first.rfind(kRunawayInKey, 0) != 0) {
+            out_->values[kRunawayInKey + *name_] = double(entry_->calls);
+        }
     }
 }
 
