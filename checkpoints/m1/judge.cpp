@@ -139,6 +139,9 @@ const char* const kFarWuHint =
     "Compute each column's y from the endpoint whose y is nearer the image (lesson, section 6).";
 const char* const kMajorAxisHint =
     "Decide steep with |dy| > |dx|: every other line, 45 degrees and zero length included, steps along x.";
+const char* const kEndpointHint =
+    "A line from pixel a to pixel b has max(dx, dy) + 1 pixels, both ends included: plot the pixel "
+    "before testing whether it was the last one (or loop with <=, not <).";
 constexpr double kUnresolved = 1e12;
 
 // How far v lies outside [0, size] (0 inside).
@@ -412,7 +415,7 @@ struct Checker {
         }
         if (!missing.empty() && only_endpoints) {
             add("endpoint", plan.name + ": endpoint pixel " + str(missing.front()) + " is not drawn; both endpoints belong to the line",
-                "TODOs 3-4");
+                "TODOs 3-4", kEndpointHint);
             return;
         }
         if (!missing.empty() && missing.size() == plan.required.size()) {
