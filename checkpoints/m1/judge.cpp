@@ -403,6 +403,23 @@ struct Checker {
         }
     }
 
+    // Most missing pixels (of those whose mirror image is in the picture) have their mirror
+    // image across one endpoint's minor coordinate lit: the minor step has the wrong sign.
+    bool mirrored(const Plan& plan, const std::vector<Pix>& missing) const {
+        const bool x_major = std::llabs(plan.p1.x - plan.p0.x) >= std::llabs(plan.p1.y - plan.p0.y);
+        for (const Pix start : {plan.p0, plan.p1}) {
+            int checked = 0, lit_mirrors = 0;
+            for (Pix p : missing) {
+                const Pix m = x_major ? Pix{p.x, 2 * start.y - p.y} : Pix{2 * start.x - p.x, p.y};
+                if (m.x < 0 || m.y < 0 || m.x >= img.width() || m.y >= img.height()) continue;
+                ++checked;
+                lit_mirrors += lit(img, m);
+            }
+            if (checked >= 2 && 4 * lit_mirrors >= 3 * checked) return true;
+        }
+        return false;
+    }
+
     void check_plan(const Plan& plan) {
         // Missing pixels. Only endpoints missing: the loop bounds. More than that: the line
         // runs in the wrong direction or on the wrong axis for its octant.
@@ -416,6 +433,18 @@ struct Checker {
         if (!missing.empty() && only_endpoints) {
             add("endpoint", plan.name + ": endpoint pixel " + str(missing.front()) + " is not drawn; both endpoints belong to the line",
                 "TODOs 3-4", kEndpointHint);
+            return;
+        }
+        if (missing.size() >= 2 && plan.exact && mirrored(plan, missing)) {
+            const bool x_major = std::llabs(plan.p1.x - plan.p0.x) >= std::llabs(plan.p1.y - plan.p0.y);
+            add("step sign", plan.name + ": " + std::to_string(missing.size()) + " of its " +
+                                 std::to_string(plan.required.size()) + " certain pixels are missing, e.g. " +
+                                 str(missing[missing.size() / 2]) + ", and the pixels drawn instead are the line "
+                                 "mirrored across its first pixel: the minor axis (" + (x_major ? "y" : "x") +
+                                 " here) steps the wrong way",
+                "TODO 3",
+                "Each step moves toward the end pixel: x += sx and y += sy, with sx and sy the signs of "
+                "x1 - x0 and y1 - y0, in both branches (the steep one and the shallow one).");
             return;
         }
         if (!missing.empty() && missing.size() == plan.required.size()) {
@@ -638,7 +667,14 @@ struct Checker {
 
 // The harness's stray-write finding names no function; the trace says which one wrote
 // outside the image, and each has its own usual cause.
-void attribute_stray_writes(const cp::Artifacts& art, cp::Judgement& j) {
+// Every line this scene draws with draw_line lies inside the image (in clip scenes, the
+// viewport and the clipped parts lie inside the whole lines' box): clipping has nothing to cut.
+bool draw_line_stays_inside(const Scene& s) {
+    auto in = [&](Vec2 p) { return raster::is_finite(p) && p.x >= 0 && p.y >= 0 && p.x < s.width && p.y < s.height; };
+    return std::all_of(s.lines.begin(), s.lines.end(), [&](const Segment& g) { return g.aa || (in(g.a) && in(g.b)); });
+}
+
+void attribute_stray_writes(const Scene& scene, const cp::Artifacts& art, cp::Judgement& j) {
     if (art.stray_writes <= 0 || j.findings.size() != 1) return;
     long long attributed = 0;
     std::vector<cp::Finding> named;
@@ -654,6 +690,16 @@ void attribute_stray_writes(const cp::Artifacts& art, cp::Judgement& j) {
                              "Test 0 <= row < height (for a steep line, the x against the width) before each "
                              "blend, and skip a column whose t is out of range before converting it to int.",
                              "TODO 5"});
+        } else if (name == "draw_line" && draw_line_stays_inside(scene)) {
+            named.push_back({"step sign",
+                             "draw_line asked to write " + n + " outside the image, though every line it "
+                             "draws here lies inside the image, so clipping has nothing to cut: the loop "
+                             "walks away from the line. A step in the wrong direction does this (x -= sx "
+                             "where x += sx is meant, or a step sign fixed at +1)",
+                             "Each step moves toward the end pixel: x += sx and y += sy, with sx and sy the "
+                             "signs of x1 - x0 and y1 - y0, in both branches. Check which lines are wrong in "
+                             "diff.png: the steep ones, or the shallow ones.",
+                             "TODO 3"});
         } else if (name == "draw_line") {
             named.push_back({"clipping",
                              "draw_line asked to write " + n + " outside the image: clip the segment "
@@ -676,7 +722,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
     const Image* main = cp::main_image_for_judging(art, s.width, s.height, j, "clipping",
                                                    "clip first, so the work stays proportional to the visible pixels");
     if (main == nullptr) return j;  // the harness reports a missing or mis-sized image
-    attribute_stray_writes(art, j);
+    attribute_stray_writes(s, art, j);
     const Image& img = *main;
     Checker check{s, img, j, {}, false, {}};
     std::vector<Plan> plans;
