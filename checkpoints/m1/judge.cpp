@@ -111,6 +111,9 @@ struct Plan {
     // arithmetic can place the line to the pixel, so lines.h promises only safety for it and
     // its pixels are not judged.
     bool unjudged = false;
+    // Band lines: endpoint pixels that every correct draw_line draws all the same (an endpoint
+    // inside the image that no clipping moved: draw_line snaps it to its own pixel).
+    std::vector<Pix> pinned_ends;
 };
 
 constexpr double kFar = 1e15;
@@ -467,6 +470,12 @@ struct Checker {
                 return;
             }
         }
+        for (Pix p : plan.pinned_ends) {
+            if (lit(img, p)) continue;
+            add("endpoint", plan.name + ": endpoint pixel " + str(p) + " is not drawn; both endpoints belong to the line",
+                "TODOs 3-4", kEndpointHint);
+            return;
+        }
         std::size_t drawn_columns = 0;
         std::optional<Pix> gap;
         for (const auto& band : plan.band_columns) {
@@ -738,13 +747,29 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
         case Kind::kClip: {
             // The picture: each whole line, the viewport border and each clipped part, all drawn
             // with draw_line. Judged as bands: the numbers from clip_line are judged exactly.
-            for (const Segment& seg : s.lines) plans.push_back(make_plan({seg.a, seg.b, kUnclippedColor}, s.width, s.height, true));
+            // The endpoints that clip_line does not move (every whole line's, a clipped part's
+            // inside one) are drawn at their own pixels, like any line's: those are judged.
+            auto pin = [&](Plan& plan, std::initializer_list<Vec2> ends) {
+                for (Vec2 e : ends) {
+                    const Vec2 c = snapped_center(e);
+                    if (inside(c, s.width, s.height)) plan.pinned_ends.push_back({int(c.x), int(c.y)});
+                }
+            };
+            for (const Segment& seg : s.lines) {
+                plans.push_back(make_plan({seg.a, seg.b, kUnclippedColor}, s.width, s.height, true));
+                pin(plans.back(), {seg.a, seg.b});
+            }
             const Box& v = s.viewport;
             const Vec2 corners[] = {{v.xmin, v.ymin}, {v.xmax, v.ymin}, {v.xmax, v.ymax}, {v.xmin, v.ymax}};
-            for (int k = 0; k < 4; ++k) plans.push_back(make_plan({corners[k], corners[(k + 1) % 4], kViewportColor}, s.width, s.height, true));
+            for (int k = 0; k < 4; ++k) {
+                plans.push_back(make_plan({corners[k], corners[(k + 1) % 4], kViewportColor}, s.width, s.height, true));
+                pin(plans.back(), {corners[k], corners[(k + 1) % 4]});
+            }
             for (const Segment& seg : s.lines) {
                 if (const auto part = clip_oracle(seg.a, seg.b, v)) {
                     plans.push_back(make_plan({part->first, part->second, seg.color}, s.width, s.height, true));
+                    if (part->first == seg.a) pin(plans.back(), {seg.a});
+                    if (part->second == seg.b) pin(plans.back(), {seg.b});
                 }
             }
             check.check_lines(plans);
