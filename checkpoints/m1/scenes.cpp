@@ -324,7 +324,7 @@ std::vector<Scene> make_scenes() {
     {
         Scene s;
         s.id = "m1.extreme_far";
-        s.title = "lines whose endpoints are both far away in both coordinates: safe, not judged to the pixel";
+        s.title = "far lines (both endpoints far away in both coordinates) are judged for safety only; the two short lines beside them, to the pixel";
         s.hint = "Such a line must not crash, hang or write outside the image: check that the "
                  "numbers you compute are finite (1.5e308 - -1.5e308 overflows to infinity, and "
                  "0 * infinity is NaN) and clip before converting to int. Where it is drawn is "
