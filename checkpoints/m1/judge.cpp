@@ -145,6 +145,9 @@ const char* const kMajorAxisHint =
 const char* const kEndpointHint =
     "A line from pixel a to pixel b has max(dx, dy) + 1 pixels, both ends included: plot the pixel "
     "before testing whether it was the last one (or loop with <=, not <).";
+const char* const kDrawingNotClippingHint =
+    "clip_line is right on this scene, so the drawing is wrong: make the octant checkpoints "
+    "(m1.octant_1 ... m1.octant_8) pass first, checking the step signs sx and sy.";
 constexpr double kUnresolved = 1e12;
 
 // How far v lies outside [0, size] (0 inside).
@@ -353,6 +356,9 @@ struct Checker {
     };
     std::vector<FarFailure> far_failures;
     std::size_t strays_at = 0;  // where the off-the-line finding is (or would be)
+    // Clip scenes: clip_line returned the right points for every segment, so a line that
+    // leaves its band was drawn wrong, not clipped wrong.
+    bool clip_values_right = false;
 
     int& claim(Pix p) { return claims[std::size_t(p.y) * img.width() + p.x]; }
 
@@ -383,7 +389,8 @@ struct Checker {
         if (strays > 0) {
             add("off the line",
                 cp::plural(double(strays), "pixel") + (strays == 1 ? " is" : " are") + " drawn where no line passes within half a "
-                "pixel of their center, e.g. " + first);
+                "pixel of their center, e.g. " + first,
+                "", clip_values_right ? kDrawingNotClippingHint : "");
         }
         for (const Plan& plan : plans) {
             if (plan.aa_zero_length_center && !plan.aa_zero_length.empty()) {
@@ -489,6 +496,10 @@ struct Checker {
                     << " where it crosses the image have a pixel of it (a gap near " << str(*gap) << "). "
                     << (plan.far_both ? kFarBothClipLesson : kFarOneClipLesson);
                 far_failures.push_back({"clipping", message, why.str(), "TODOs 2, 4", "TODO 2", kFarClipHint});
+            } else if (clip_values_right) {
+                add("octant", plan.name + ": the line has a gap near " + str(*gap) + ", though clip_line returned the "
+                              "right points for every line of this scene: the drawing loop leaves the line",
+                    "TODO 3", kDrawingNotClippingHint);
             } else {
                 add("clipping", message, "TODOs 2, 4");
             }
@@ -773,8 +784,15 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
                     if (part->second == seg.b) pin(plans.back(), {seg.b});
                 }
             }
-            check.check_lines(plans);
+            // The numbers first, to know whether a line off its band is a clipping mistake;
+            // their findings still come after the picture's.
+            const std::size_t at = j.findings.size();
             check.check_clip_values(art);
+            const std::vector<cp::Finding> clip_findings(j.findings.begin() + std::ptrdiff_t(at), j.findings.end());
+            j.findings.erase(j.findings.begin() + std::ptrdiff_t(at), j.findings.end());
+            check.clip_values_right = clip_findings.empty();
+            check.check_lines(plans);
+            j.findings.insert(j.findings.end(), clip_findings.begin(), clip_findings.end());
             break;
         }
     }
