@@ -414,7 +414,8 @@ struct Checker {
     }
 
     // Most missing pixels (of those whose mirror image is in the picture) have their mirror
-    // image across one endpoint's minor coordinate lit: the minor step has the wrong sign.
+    // image across one endpoint's minor coordinate drawn, in this line's color and off every
+    // line: the minor step has the wrong sign.
     bool mirrored(const Plan& plan, const std::vector<Pix>& missing) const {
         const bool x_major = std::llabs(plan.p1.x - plan.p0.x) >= std::llabs(plan.p1.y - plan.p0.y);
         for (const Pix start : {plan.p0, plan.p1}) {
@@ -423,7 +424,8 @@ struct Checker {
                 const Pix m = x_major ? Pix{p.x, 2 * start.y - p.y} : Pix{2 * start.x - p.x, p.y};
                 if (m.x < 0 || m.y < 0 || m.x >= img.width() || m.y >= img.height()) continue;
                 ++checked;
-                lit_mirrors += lit(img, m);
+                // In this line's color, where no line may draw: not a crossing line's pixel.
+                lit_mirrors += img.at(m.x, m.y) == plan.color && claims[std::size_t(m.y) * img.width() + m.x] == 0;
             }
             if (checked >= 2 && 4 * lit_mirrors >= 3 * checked) return true;
         }
