@@ -454,10 +454,11 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
                  "black."};
     const std::string aa_rule_rest = " samples exactly on an edge counted wrongly (the coverage matches counting every "
                                      "such sample, or none): apply the top-left rule to each sample, as to a pixel "
-                                     "center";
-    Tally aa_rule{"fill rule", "have" + aa_rule_rest, "has" + aa_rule_rest, "TODO 6",
+                                     "center. If m2.top_left fails too, the rule itself is wrong (TODO 4b, covers()); "
+                                     "if it passes, fill_triangle_aa does not test its samples with covers() (TODO 6)";
+    Tally aa_rule{"fill rule", "have" + aa_rule_rest, "has" + aa_rule_rest, "TODO 4b or 6",
                   "Test each sample with the same covers() as a pixel center: a sample on an edge counts only for a "
-                  "top or left edge."};
+                  "top or left edge; m2.top_left checks covers() alone."};
     bool has_aa = false, has_gradient = false;
 
     for (int y = 0; y < s.height; ++y) {
@@ -724,17 +725,33 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
         // window may take either accepted level in each winding (float sums in another order).
         const auto other = art.images.find("other_winding");
         const bool sized = other != art.images.end() && other->second.width() == s.width && other->second.height() == s.height;
-        long long differ = 0;
+        long long differ = 0, colors_only = 0;  // colors_only: a gradient pixel filled in both orders
         for (int y = 0; sized && y < s.height; ++y) {
             for (int x = 0; x < s.width; ++x) {
                 const Color a = img.at(x, y), b = other->second.at(x, y);
                 if (a == b) continue;
                 const Expectation e = expect_pixel(s, shapes, x, y);
-                const bool tie = e.top >= 0 && s.tris[e.top].gradient && e.gradient_exact && e.grad_lo != e.grad_hi;
-                differ += !(tie && within(a, e.grad_lo, e.grad_hi, 0) && within(b, e.grad_lo, e.grad_hi, 0));
+                const bool gradient = e.top >= 0 && s.tris[e.top].gradient;
+                const bool tie = gradient && e.gradient_exact && e.grad_lo != e.grad_hi;
+                const bool counted = !(tie && within(a, e.grad_lo, e.grad_hi, 0) && within(b, e.grad_lo, e.grad_hi, 0));
+                differ += counted;
+                // Filled by the gradient triangle on top in both orders: neither is the color
+                // under it (which a fill-rule change would show).
+                colors_only += counted && gradient && a != e.under && b != e.under;
             }
         }
-        if (!sized || differ > 0) {
+        if (sized && differ > 0 && colors_only == differ) {
+            // Both orders fill the same pixels; only the gradient's colors move: the winding is
+            // fixed (TODO 4a), but the colors did not follow their vertices (TODO 5).
+            j.findings.push_back(finding("winding",
+                                         "listing each triangle's vertices in the other order filled the same pixels "
+                                         "but changed the color of " + cp::plural(double(differ), "gradient pixel") +
+                                             " (see other_winding.png): when set_up swaps v1 and v2 to fix the winding, "
+                                             "fill_triangle_gradient must swap c1 and c2 too, so each color stays with "
+                                             "its vertex",
+                                         "TODO 5",
+                                         "set_up reports the swap (Setup::swapped); after it, swap c1 and c2 as well."));
+        } else if (!sized || differ > 0) {
             j.findings.push_back(finding("winding",
                                          "listing each triangle's vertices in the other order changed " +
                                              cp::plural(double(differ), "pixel") +
