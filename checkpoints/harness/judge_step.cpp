@@ -120,6 +120,12 @@ std::string finding_line(const Suite& suite, const Finding& f) {
     return "[" + f.topic + "] " + (named ? "" : "(" + todo + ") ") + f.message;
 }
 
+// "first call on this scene", "call number 3 on this scene (2 earlier calls returned)".
+std::string which_call(long long call) {
+    if (call <= 1) return "first call on this scene";
+    return "call number " + std::to_string(call) + " on this scene (" + plural(double(call - 1), "earlier call") + " returned)";
+}
+
 // The finding for a render the watchdog stopped.
 Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
     std::ostringstream msg;
@@ -129,13 +135,8 @@ Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
         return {"endless loop", msg.str()};
     }
     const StudentFunction* f = find_function(suite, s.function);
-    msg << function_label(suite, s.function) << " was still running after " << s.seconds << " s, in its ";
-    if (s.call <= 1) {
-        msg << "first call on this scene";
-    } else {
-        msg << "call number " << s.call << " on this scene (" << plural(double(s.call - 1), "earlier call") << " returned)";
-    }
-    msg << ", having written " << plural(double(s.writes), "pixel") << " in that call";
+    msg << function_label(suite, s.function) << " was still running after " << s.seconds << " s, in its "
+        << which_call(s.call) << ", having written " << plural(double(s.writes), "pixel") << " in that call";
     if (s.stray_writes > 0) msg << " and " << s.stray_writes << " outside the image";
     msg << ": most likely an endless loop, so the watchdog stopped it";
     Finding out{f && !f->loop_topic.empty() ? f->loop_topic : "endless loop", msg.str()};
@@ -147,15 +148,18 @@ Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
 // One finding per function that the reference drew with on this scene and the code under test
 // called without drawing anything: most often a TODO not written yet.
 // A function in `ran` (Judgement::ran) is said to have drawn nothing though it ran, without the
-// "not written yet" hint, and after the judge's own findings, which say why.
-std::vector<Finding> nothing_drawn_findings(const Suite& suite, const Artifacts& student, const Artifacts& reference,
-                                            const std::vector<std::string>& ran, bool want_ran) {
+// "not written yet" hint, in `after`: the judge's own findings, which say why, come first.
+struct NothingDrawn {
+    std::vector<Finding> before, after;
+};
+NothingDrawn nothing_drawn_findings(const Suite& suite, const Artifacts& student, const Artifacts& reference,
+                                    const std::vector<std::string>& ran) {
     std::vector<std::string> names;  // the milestone's TODO order first, then any other
     for (const StudentFunction& f : suite.functions) names.push_back(f.name);
     for (const auto& [name, t] : reference.trace) {
         if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     }
-    std::vector<Finding> out;
+    NothingDrawn out;
     for (const std::string& name : names) {
         const auto ref_it = reference.trace.find(name);
         if (ref_it == reference.trace.end()) continue;
@@ -163,30 +167,23 @@ std::vector<Finding> nothing_drawn_findings(const Suite& suite, const Artifacts&
         const auto it = student.trace.find(name);
         if (ref.writes == 0 || it == student.trace.end() || it->second.calls == 0 || it->second.writes > 0) continue;
         const bool did_run = std::find(ran.begin(), ran.end(), name) != ran.end();
-        if (did_run != want_ran) continue;
         const StudentFunction* f = find_function(suite, name);
-        if (did_run) {
-            Finding finding{"nothing drawn",
-                            function_label(suite, name) + " ran (the work it counted is not zero) but drew nothing" +
-                                (it->second.stray_writes > 0 ? " inside the image" : "") + " in " +
-                                plural(double(it->second.calls), "call") + "; the reference draws " +
-                                plural(double(ref.writes), "pixel") + " with it on this scene, so its TODO is "
-                                "written but what it computed put nothing on screen"};
-            finding.todo = f ? todo_label(f->todos) : "";
-            out.push_back(finding);
-            continue;
-        }
-        std::string msg = function_label(suite, name) + " drew nothing" +
-                          (it->second.stray_writes > 0 ? " inside the image" : "") + " in " +
+        std::string msg = function_label(suite, name) + (did_run ? " ran (the work it counted is not zero) but" : "") +
+                          " drew nothing" + (it->second.stray_writes > 0 ? " inside the image" : "") + " in " +
                           plural(double(it->second.calls), "call") + "; the reference draws " +
                           plural(double(ref.writes), "pixel") + " with it on this scene";
+        if (did_run) msg += ", so its TODO is written but what it computed put nothing on screen";
         Finding finding{"nothing drawn", msg};
         finding.todo = f ? todo_label(f->todos) : "";
+        if (did_run) {
+            out.after.push_back(finding);
+            continue;
+        }
         const bool several = finding.todo.rfind("TODOs", 0) == 0;
         finding.hint = (finding.todo.empty() ? "this TODO" : finding.todo) + (several ? " are" : " is") +
                        " not written yet, or `" + name + "` returns before drawing anything (on this scene the "
                        "reference draws at least one pixel with it): fill it in, following its section in the lesson";
-        out.push_back(finding);
+        out.before.push_back(finding);
     }
     return out;
 }
@@ -307,10 +304,7 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
         if (in != student.values.end() && in->first.rfind(kRunawayInKey, 0) == 0) {
             const std::string name = in->first.substr(std::string(kRunawayInKey).size());
             const long long call = static_cast<long long>(in->second);
-            where = function_label(suite, name) + ", in its " +
-                    (call <= 1 ? std::string("first call on this scene,")
-                               : "call number " + std::to_string(call) + " on this scene (" +
-                                     plural(double(call - 1), "earlier call") + " returned),");
+            where = function_label(suite, name) + ", in its " + which_call(call) + ",";
             const StudentFunction* f = find_function(suite, name);
             runaway.todo = f ? todo_label(f->todos) : "";
         }
@@ -321,10 +315,9 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
         findings.insert(findings.begin(), runaway);
     }
     if (!judgement.upstream_failed) {
-        const std::vector<Finding> nothing = nothing_drawn_findings(suite, student, reference, judgement.ran, false);
-        findings.insert(findings.begin(), nothing.begin(), nothing.end());
-        const std::vector<Finding> ran = nothing_drawn_findings(suite, student, reference, judgement.ran, true);
-        findings.insert(findings.end(), ran.begin(), ran.end());
+        const NothingDrawn nothing = nothing_drawn_findings(suite, student, reference, judgement.ran);
+        findings.insert(findings.begin(), nothing.before.begin(), nothing.before.end());
+        findings.insert(findings.end(), nothing.after.begin(), nothing.after.end());
     }
     if (!expected_in.problem.empty()) findings.push_back({"setup", expected_in.problem});
 
