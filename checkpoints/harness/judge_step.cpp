@@ -148,12 +148,13 @@ Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
 // One finding per function that the reference drew with on this scene and the code under test
 // called without drawing anything: most often a TODO not written yet.
 // A function in `ran` (Judgement::ran) is said to have drawn nothing though it ran, without the
-// "not written yet" hint, in `after`: the judge's own findings, which say why, come first.
+// "not written yet" hint, in `after`: the judge's own findings, which say why, come first. The
+// function a runaway loop stopped (`stopped`) is left out: the runaway finding explains it.
 struct NothingDrawn {
     std::vector<Finding> before, after;
 };
 NothingDrawn nothing_drawn_findings(const Suite& suite, const Artifacts& student, const Artifacts& reference,
-                                    const std::vector<std::string>& ran) {
+                                    const std::vector<std::string>& ran, const std::string& stopped) {
     std::vector<std::string> names;  // the milestone's TODO order first, then any other
     for (const StudentFunction& f : suite.functions) names.push_back(f.name);
     for (const auto& [name, t] : reference.trace) {
@@ -166,6 +167,7 @@ NothingDrawn nothing_drawn_findings(const Suite& suite, const Artifacts& student
         const FunctionTrace& ref = ref_it->second;
         const auto it = student.trace.find(name);
         if (ref.writes == 0 || it == student.trace.end() || it->second.calls == 0 || it->second.writes > 0) continue;
+        if (name == stopped) continue;  // the runaway finding says why it drew nothing
         const bool did_run = std::find(ran.begin(), ran.end(), name) != ran.end();
         const StudentFunction* f = find_function(suite, name);
         std::string msg = function_label(suite, name) + (did_run ? " ran (the work it counted is not zero) but" : "") +
@@ -297,12 +299,14 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
         judgement = suite.judge(id, student, reference, expected);
     }
     std::vector<Finding>& findings = judgement.findings;
+    std::string stopped_function;  // the function the runaway stopped: it drew nothing because it was stopped
     if (student.values.count(kRunawayKey)) {
         std::string where = "your code";
         const auto in = student.values.lower_bound(kRunawayInKey);
         Finding runaway{"runaway loop", ""};
         if (in != student.values.end() && in->first.rfind(kRunawayInKey, 0) == 0) {
             const std::string name = in->first.substr(std::string(kRunawayInKey).size());
+            stopped_function = name;
             const long long call = static_cast<long long>(in->second);
             where = function_label(suite, name) + ", in its " + which_call(call) + ",";
             const StudentFunction* f = find_function(suite, name);
@@ -315,8 +319,10 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
         findings.insert(findings.begin(), runaway);
     }
     if (!judgement.upstream_failed) {
-        const NothingDrawn nothing = nothing_drawn_findings(suite, student, reference, judgement.ran);
-        findings.insert(findings.begin(), nothing.before.begin(), nothing.before.end());
+        const NothingDrawn nothing = nothing_drawn_findings(suite, student, reference, judgement.ran, stopped_function);
+        // The runaway, if any, stays first: it is why the rest of the scene was not drawn.
+        const auto at = findings.begin() + (student.values.count(kRunawayKey) ? 1 : 0);
+        findings.insert(at, nothing.before.begin(), nothing.before.end());
         findings.insert(findings.end(), nothing.after.begin(), nothing.after.end());
     }
     if (!expected_in.problem.empty()) findings.push_back({"setup", expected_in.problem});

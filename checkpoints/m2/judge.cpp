@@ -751,7 +751,9 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
                                              "its vertex",
                                          "TODO 5",
                                          "set_up reports the swap (Setup::swapped); after it, swap c1 and c2 as well."));
-        } else if (!sized || differ > 0) {
+        } else if (differ > 0) {
+            // (No other_winding image means the render was stopped before drawing it: the
+            // runaway or watchdog finding says so, and there is nothing to compare.)
             j.findings.push_back(finding("winding",
                                          "listing each triangle's vertices in the other order changed " +
                                              cp::plural(double(differ), "pixel") +
