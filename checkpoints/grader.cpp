@@ -326,6 +326,12 @@ double max_points(const MilestoneRubric& r, const std::string& name, const json&
     return it == r.points.end() ? r.default_points : it->second;
 }
 
+std::string points_text(double p) {
+    std::ostringstream s;
+    s << std::setprecision(4) << p << (p == 1 ? " point" : " points");
+    return s.str();
+}
+
 // Points earned: all on a pass; on a failure, when every concept that failed belongs to a
 // partial-credit part (an independent property of the checkpoint), the maximum less those
 // parts' points; otherwise 0. No verdict at all: 0.
@@ -343,7 +349,7 @@ double earned(const MilestoneRubric& r, double max, const json& verdict, std::st
         if (part == nullptr) return 0;
         if (used.insert(part).second) {
             lost += part->points;
-            why += (why.empty() ? "" : "; ") + std::string("partial credit: lost ") + std::to_string(part->points) +
+            why += (why.empty() ? "" : "; ") + std::string("partial credit: lost ") + points_text(part->points) +
                    " for " + (part->what.empty() ? c : part->what);
         }
     }

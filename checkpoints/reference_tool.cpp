@@ -256,8 +256,9 @@ std::string todo_table_text(const std::string& milestone) {
         << "checkpoint scores 0";
     const nlohmann::json partial = rubric.value("partial", nlohmann::json::array());
     for (const nlohmann::json& part : partial) {
-        out << "; one that fails only on " << part.value("what", std::string("one property")) << " loses "
-            << fmt(part.value("points", 0.0)) << " point(s) instead";
+        const double lost = part.value("points", 0.0);
+        out << "; one whose only failure is " << part.value("what", std::string("one independent property"))
+            << " loses " << fmt(lost) << (lost == 1 ? " point" : " points") << ", not all of them";
     }
     out << ".\n";
     return out.str();

@@ -39,8 +39,9 @@
 //    any loop order, incremental stepping or helper structure you like.
 //
 //  * Range and bad input. Triangles with a NaN or infinite coordinate, with |coordinate| >
-//    kMaxCoordinate, or with zero area (collinear or coincident vertices) draw nothing and
-//    never divide by zero. Work is proportional to the pixels inside the image: the bounding
+//    kMaxCoordinate, or with zero area (collinear or coincident vertices) draw nothing
+//    (tested). Rejecting zero area before any division is advice: with the top-left rule, such
+//    a triangle covers no center anyway, so no checkpoint sees the division by zero. Work is proportional to the pixels inside the image: the bounding
 //    box is clamped to the image before any loop starts. Nothing extreme (1e300, subnormals,
 //    vertices just past 2^24, n outside 1, 2, 4, 8) reaches undefined behaviour: the project
 //    fuzzes the reference with such input under AddressSanitizer and UndefinedBehaviorSanitizer,

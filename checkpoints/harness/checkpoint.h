@@ -95,6 +95,9 @@ struct Tolerance {
     raster::Mask lenient;  // empty mask: every pixel is strict
     long long max_lenient_diffs = 0;
     std::string why;
+    // Pixels the judge's own pixel rules found wrong (a lenient pixel it judged and rejected):
+    // red in diff.png, never counted as tolerated. They fail through the judge's findings.
+    raster::Mask wrong;
 };
 
 // Whether `actual` fails `expected` under the tolerance: the judge step's own rule, for the

@@ -2,6 +2,7 @@
 #include "harness/verdict.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -23,6 +24,7 @@ namespace {
 struct PolicyCount {
     long long strict_diffs = 0;
     long long lenient_diffs = 0;
+    long long judged_wrong = 0;  // differing pixels in Tolerance::wrong
     long long small_diffs = 0;  // outside the lenient mask, within strict_channel_diff levels
     int first_x = -1, first_y = -1;  // first strict difference, for the message
     raster::Image diff;  // expected dimmed; errors bright red, tolerated differences blue
@@ -47,7 +49,10 @@ PolicyCount count_under_policy(const raster::Image& actual, const raster::Image&
             // One rule for every pixel: a difference of at most strict_channel_diff levels is
             // rounding wherever it is; a larger one is allowed only in the lenient band, and
             // only up to max_lenient_diffs of them.
-            if (d > tol.strict_channel_diff && tol.lenient.get(x, y)) {
+            if (d > 0 && tol.wrong.get(x, y)) {
+                ++pc.judged_wrong;  // the judge's findings say why
+                mark = kErrorMark;
+            } else if (d > tol.strict_channel_diff && tol.lenient.get(x, y)) {
                 ++pc.lenient_diffs;
                 mark = kToleratedMark;
                 lenient_at.push_back(std::size_t(y) * expected.width() + x);
@@ -150,6 +155,18 @@ Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
 // A function in `ran` (Judgement::ran) is said to have drawn nothing though it ran, without the
 // "not written yet" hint, in `after`: the judge's own findings, which say why, come first. The
 // function a runaway loop stopped (`stopped`) is left out: the runaway finding explains it.
+// The lowest TODO number in a label ("TODO 4", "TODOs 2, 4", "TODO 4b or 6"); 1000 for none.
+int lowest_todo(const std::string& label) {
+    int lowest = 1000;
+    for (std::size_t i = 0; i < label.size(); ++i) {
+        if (!std::isdigit(static_cast<unsigned char>(label[i])) || (i > 0 && std::isdigit(static_cast<unsigned char>(label[i - 1])))) {
+            continue;
+        }
+        lowest = std::min(lowest, std::atoi(label.c_str() + i));
+    }
+    return lowest;
+}
+
 struct NothingDrawn {
     std::vector<Finding> before, after;
 };
@@ -312,17 +329,28 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
             const StudentFunction* f = find_function(suite, name);
             runaway.todo = f ? todo_label(f->todos) : "";
         }
+        // A line's loop runs away by stepping the wrong way; a fill's, by an unclamped box.
+        const bool line = stopped_function.find("line") != std::string::npos;
+        const std::string check = stopped_function.empty() ? "its stop condition (for a line, the step signs; for a fill, the box's "
+                                                             "clamping)"
+                                  : line ? "its stop condition (the step signs)"
+                                         : "(for a fill) whether the box it loops over is clamped to the image";
         runaway.message = where + " was stopped after " + std::to_string(kStrayWriteBudget) +
-                          " writes outside the image: a loop runs past its end point. Check the loop's bounds and "
-                          "its stop condition (for a line, the step signs). The calls after that write never ran: a finding below about "
+                          " writes outside the image: a loop runs past its end point. Check the loop's bounds and " + check +
+                          ". The calls after that write never ran: a finding below about "
                           "what they compute (nan, \"not drawn\", \"not written yet\") is about code that was not reached";
         findings.insert(findings.begin(), runaway);
     }
     if (!judgement.upstream_failed) {
         const NothingDrawn nothing = nothing_drawn_findings(suite, student, reference, judgement.ran, stopped_function);
-        // The runaway, if any, stays first: it is why the rest of the scene was not drawn.
-        const auto at = findings.begin() + (student.values.count(kRunawayKey) ? 1 : 0);
-        findings.insert(at, nothing.before.begin(), nothing.before.end());
+        // The runaway, if any, stays first: it is why the rest of the scene was not drawn. So do
+        // the judge's findings that name an earlier TODO than the functions that drew nothing
+        // (the skeleton's m2.edge_and_box: snap's TODO 1 before fill_triangle's TODO 4).
+        std::size_t at = student.values.count(kRunawayKey) ? 1 : 0;
+        int nothing_todo = 1000;
+        for (const Finding& f : nothing.before) nothing_todo = std::min(nothing_todo, lowest_todo(f.todo));
+        while (at < findings.size() && lowest_todo(findings[at].todo) < nothing_todo) ++at;
+        findings.insert(findings.begin() + std::ptrdiff_t(at), nothing.before.begin(), nothing.before.end());
         findings.insert(findings.end(), nothing.after.begin(), nothing.after.end());
     }
     if (!expected_in.problem.empty()) findings.push_back({"setup", expected_in.problem});
@@ -376,6 +404,10 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
                 }
                 rec.tolerated_why = t.str();
                 report << "  tolerated: " << rec.tolerated_why << "\n";
+            }
+            if (pc.judged_wrong > 0) {
+                report << "  judged wrong: " << plural(double(pc.judged_wrong), "pixel")
+                       << " where the pixel rules below decide (red in diff.png)\n";
             }
             if (pc.strict_diffs > 0) {
                 findings.push_back(

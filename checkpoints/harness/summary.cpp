@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -229,6 +230,19 @@ std::string report_block(const std::filesystem::path& log_path, const std::strin
     return block;
 }
 
+// The lowest TODO number the findings name ("[snap] (TODO 1) ...", "(TODOs 2, 4)", "fix TODO 3
+// first"); a large number when none does.
+int lowest_todo(const std::vector<std::string>& findings) {
+    static const std::regex todo(R"(TODOs? ([0-9]+))");
+    int lowest = 1000;
+    for (const std::string& f : findings) {
+        for (auto it = std::sregex_iterator(f.begin(), f.end(), todo); it != std::sregex_iterator(); ++it) {
+            lowest = std::min(lowest, std::stoi((*it)[1].str()));
+        }
+    }
+    return lowest;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -268,13 +282,26 @@ int main(int argc, char** argv) {
 
     int passed = 0, failed = 0, crashed = 0;
 
+    // The first to fix: in the first milestone with a failure, the failing checkpoint whose
+    // findings name the lowest TODO (the lesson's order of work: the skeleton's m2.edge_and_box,
+    // which says what snap() returns, before m2.solid, which says that nothing is drawn); at a
+    // tie, or without a TODO named, the first in the lesson's order.
+    const cp::Record* first = nullptr;
+    int first_todo = 0;
     for (const cp::Record& r : records) {
         if (r.status == "pass") continue;
-        const std::string block = report_block(log_path, r.id);
+        if (first != nullptr && r.milestone != first->milestone) break;
+        const int todo = lowest_todo(r.findings);
+        if (first == nullptr || todo < first_todo) {
+            first = &r;
+            first_todo = todo;
+        }
+    }
+    if (first != nullptr) {
+        const std::string block = report_block(log_path, first->id);
         if (!block.empty()) {
             std::cout << "\nThe first checkpoint to fix, in full (the others are one line each below):\n\n" << block;
         }
-        break;
     }
 
     std::cout << "\n"

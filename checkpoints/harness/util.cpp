@@ -78,6 +78,7 @@ std::string expected_png_path(const std::string& milestone, const std::string& i
 const raster::Image* main_image_for_judging(const Artifacts& art, int width, int height, Judgement& j,
                                             const std::string& stray_topic, const std::string& stray_advice) {
     j.tolerance.lenient = raster::Mask(width, height);
+    j.tolerance.wrong = raster::Mask(width, height);
     const auto it = art.images.find("main");
     if (it == art.images.end() || it->second.width() != width || it->second.height() != height) return nullptr;
     if (art.stray_writes > 0) {

@@ -832,7 +832,10 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
     }
     if (s.check_reversed) {
         const auto rev = art.images.find("reversed");
-        if (rev == art.images.end() || !(rev->second == img)) {
+        // (No reversed image after a runaway loop: the render stopped before drawing it, the
+        // runaway finding says so, and there is nothing to compare.)
+        const bool stopped = rev == art.images.end() && art.values.count(cp::kRunawayKey) > 0;
+        if (!stopped && (rev == art.images.end() || !(rev->second == img))) {
             long long differ = 0;
             if (rev != art.images.end() && rev->second.width() == img.width() && rev->second.height() == img.height()) {
                 differ = raster::compare(rev->second, img).differing_pixels;

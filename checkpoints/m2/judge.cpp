@@ -260,7 +260,9 @@ struct Tally {
     std::string topic, what, one, todo, hint;
     long long count = 0;
     std::string examples;
+    raster::Mask* wrong = nullptr;  // Tolerance::wrong: each pixel added is red in diff.png
     void add(int x, int y, const std::string& detail = "") {
+        if (wrong) wrong->set(x, y);
         if (count++ < 3) {
             examples += (examples.empty() ? "" : "; ") + std::string("(") + std::to_string(x) + ", " +
                         std::to_string(y) + ")" + detail;
@@ -422,6 +424,16 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
     Tally extra{topic, "outside every triangle are filled", "outside every triangle is filled", plain ? "TODO 4" : "",
                 plain ? "A pixel is drawn only when its center is inside all three edges; check the signs and which "
                         "edge function belongs to which pair of vertices." : ""};
+    const bool only_aa = !s.tris.empty() && std::all_of(s.tris.begin(), s.tris.end(), [](const Tri& t) { return t.aa > 0; });
+    if (only_aa && plain) {
+        // Only fill_triangle_aa draws here: a pixel none of whose samples is inside was lit by
+        // samples placed elsewhere.
+        const std::string rest = " n * n sample positions is inside any triangle: the samples are not where the rule "
+                                 "puts them (or coverage is counted outside the triangle)";
+        extra = Tally{"supersampling", "are drawn, though none of their" + rest, "is drawn, though none of its" + rest, "TODO 6",
+                      "Sample (i, j) of pixel (x, y) is at (x + (i + 0.5) / n, y + (j + 0.5) / n): 16 * x + (2 * i + 1) * "
+                      "8 / n in sixteenths, never at the pixel's corner."};
+    }
     const std::string rule_rest = " decided wrongly (top and left edges include such centers, bottom and right edges "
                                   "exclude them)";
     Tally rule{"fill rule", "have their center exactly on an edge and are" + rule_rest,
@@ -438,8 +450,11 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
                                 "(n * n), blended over the pixel with Image::blend.";
     Tally aa_wrong{"supersampling", "have the wrong coverage for their number of covered samples",
                    "has the wrong coverage for its number of covered samples", "TODO 6", aa_hint};
-    Tally aa_unwritten{"supersampling", "have covered samples but fill_triangle_aa never wrote them",
-                       "has covered samples but fill_triangle_aa never wrote it", "TODO 6", aa_hint};
+    const std::string unwritten_rest = " but fill_triangle_aa left unchanged: either it never blended there, or it "
+                                       "blended with coverage 0 (covered / (n * n) in integers is 0 until every "
+                                       "sample is covered: divide as double)";
+    Tally aa_unwritten{"supersampling", "have covered samples" + unwritten_rest, "has covered samples" + unwritten_rest,
+                       "TODO 6", aa_hint};
     const std::string box_rest = " outside the triangle's bounding_box(): that box holds the pixels whose CENTERS can "
                                  "be inside, but a sample off the center reaches the pixels around it too. "
                                  "fill_triangle_aa must visit every pixel the triangle's box overlaps";
@@ -460,6 +475,10 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
                   "Test each sample with the same covers() as a pixel center: a sample on an edge counts only for a "
                   "top or left edge; m2.top_left checks covers() alone."};
     bool has_aa = false, has_gradient = false;
+    for (Tally* t : {&missing, &missing_gradient, &extra, &rule, &last_row, &colors, &aa_wrong, &aa_unwritten, &aa_box,
+                     &aa_rule, &aa_set}) {
+        t->wrong = &j.tolerance.wrong;
+    }
 
     for (int y = 0; y < s.height; ++y) {
         for (int x = 0; x < s.width; ++x) {
@@ -608,6 +627,12 @@ void judge_watertight(const Scene& s, const std::vector<Shape>& shapes, const Im
         }
         return false;
     };
+    // Nothing drawn at all is not a gap between triangles: the coverage finding says it.
+    bool any = false;
+    for (int y = 0; y < s.height && !any; ++y) {
+        for (int x = 0; x < s.width && !any; ++x) any = count.at(x, y) != raster::colors::black;
+    }
+    if (!any) return;
     for (int y = 0; y < s.height; ++y) {
         for (int x = 0; x < s.width; ++x) {
             const Vec2 center{x + 0.5, y + 0.5};
@@ -709,9 +734,25 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
     const Image* main = cp::main_image_for_judging(art, s.width, s.height, j, "bounding box",
                                                    "clamp the bounding box to the image");
     if (main == nullptr) return j;  // the harness reports a missing or mis-sized image
+    if (j.findings.size() == 1) {
+        // The stray writes: which functions made them (the trace says), and the TODO that
+        // clamps the box they loop over.
+        std::string who;
+        for (const auto& [name, t] : art.trace) {
+            if (t.stray_writes > 0) who += (who.empty() ? "" : " and ") + name;
+        }
+        if (!who.empty()) {
+            cp::Finding& f = j.findings.front();
+            f.message = who + f.message.substr(std::string("your code").size());
+            f.message += " (in bounding_box), and loop only over that box";
+            f.todo = "TODO 3";
+        }
+    }
     const Image& img = *main;
     std::vector<Shape> shapes;
     for (const Tri& t : s.tris) shapes.emplace_back(t);
+    // The numbers' findings come first (m2.edge_and_box: TODOs 1-3 before the picture's 4).
+    const std::size_t numbers_at = j.findings.size();
     judge_pixels(s, shapes, img, j);
     if (!s.tris.empty()) measure_area_error(s, shapes, img, j);
     if (s.watertight) {
@@ -751,9 +792,9 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
                                              "its vertex",
                                          "TODO 5",
                                          "set_up reports the swap (Setup::swapped); after it, swap c1 and c2 as well."));
-        } else if (differ > 0) {
-            // (No other_winding image means the render was stopped before drawing it: the
-            // runaway or watchdog finding says so, and there is nothing to compare.)
+        } else if (differ > 0 || (!sized && art.values.count(cp::kRunawayKey) == 0)) {
+            // (No other_winding image after a runaway loop: the render stopped before drawing
+            // it, the runaway finding says so, and there is nothing to compare.)
             j.findings.push_back(finding("winding",
                                          "listing each triangle's vertices in the other order changed " +
                                              cp::plural(double(differ), "pixel") +
@@ -763,7 +804,11 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
                                          "their colors) before testing; do not skip the triangle or flip the fill rule."));
         }
     }
-    if (!s.numbers.snaps.empty() || !s.numbers.boxes.empty()) judge_numbers(s, art, j);
+    if (!s.numbers.snaps.empty() || !s.numbers.boxes.empty()) {
+        cp::Judgement numbers;
+        judge_numbers(s, art, numbers);
+        j.findings.insert(j.findings.begin() + std::ptrdiff_t(numbers_at), numbers.findings.begin(), numbers.findings.end());
+    }
 
     j.tolerance.max_lenient_diffs = j.tolerance.lenient.count();
     j.tolerance.why = "the lenient pixels have a sample within 1/16 pixel of an edge (snapping decides them) or "

@@ -488,7 +488,9 @@ void judge_group(Group g, Ctx& c) {
                                  "comes first" +
                                      std::string(reversed ? "; yours is the exact reverse, nearest first: the camera "
                                                             "looks down -z, so a smaller z is farther away"
-                                                          : ""));
+                                                          : "") +
+                                     ". The picture follows from these numbers (draw_model fills in the order "
+                                     "painter_order returns): fix TODO 10 first");
             }
             break;
         }
