@@ -55,10 +55,11 @@
 //    that pixel, and anywhere else it draws nothing.
 //    Tested: every pixel of the interior columns, within 3 of 255 levels. The first and last
 //    column, and one beyond each, are judged leniently (only "near the line"), so Wu's
-//    textbook endpoint weighting (dimming the end columns by how much of them the segment
-//    covers) is accepted too. A zero-length
-//    line on a column center must light the nearer of its two pixels (how brightly is judged
-//    leniently, as for every end column). At exactly 45 degrees, stepping along y gives the
+//    textbook endpoint weighting (each end column dimmed by its endpoint's gap,
+//    1 - frac(x + 0.5)) is accepted too. A weighting that gives an end column no light at all
+//    is not: a zero-length line on a column center must still light the nearer of its two
+//    pixels (how brightly is judged leniently, as for every end column); the textbook's gap
+//    is 1 there. At exactly 45 degrees, stepping along y gives the
 //    same interior pixels as stepping along x, so there only the end columns differ, and they
 //    are lenient. No write outside the image, ever (Image::stray_writes() stays 0).
 //

@@ -148,6 +148,10 @@ struct Judgement {
     // they ran (the work they counted is not zero: m3's draw_model transformed and clipped,
     // then every edge was clipped away). The harness then does not say "not written yet".
     std::vector<std::string> ran = {};
+    // Functions that may draw nothing on this scene though the reference draws with them: the
+    // rule does not say which pixels they light here (m1.extreme_far's lines from 1e300 away,
+    // which no double arithmetic places to the pixel). No "drew nothing" finding for them.
+    std::vector<std::string> may_draw_nothing = {};
 };
 
 // One function a student writes, as the checkpoints see it: its name (as the render half

@@ -154,7 +154,8 @@ Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
 // called without drawing anything: most often a TODO not written yet.
 // A function in `ran` (Judgement::ran) is said to have drawn nothing though it ran, without the
 // "not written yet" hint, in `after`: the judge's own findings, which say why, come first. The
-// function a runaway loop stopped (`stopped`) is left out: the runaway finding explains it.
+// functions in `skip` are left out: the one a runaway loop stopped (the runaway finding
+// explains it) and those the judge allows to draw nothing (Judgement::may_draw_nothing).
 // The lowest TODO number in a label ("TODO 4", "TODOs 2, 4", "TODO 4b or 6"); 1000 for none.
 int lowest_todo(const std::string& label) {
     int lowest = 1000;
@@ -171,7 +172,7 @@ struct NothingDrawn {
     std::vector<Finding> before, after;
 };
 NothingDrawn nothing_drawn_findings(const Suite& suite, const Artifacts& student, const Artifacts& reference,
-                                    const std::vector<std::string>& ran, const std::string& stopped) {
+                                    const std::vector<std::string>& ran, const std::vector<std::string>& skip) {
     std::vector<std::string> names;  // the milestone's TODO order first, then any other
     for (const StudentFunction& f : suite.functions) names.push_back(f.name);
     for (const auto& [name, t] : reference.trace) {
@@ -184,7 +185,7 @@ NothingDrawn nothing_drawn_findings(const Suite& suite, const Artifacts& student
         const FunctionTrace& ref = ref_it->second;
         const auto it = student.trace.find(name);
         if (ref.writes == 0 || it == student.trace.end() || it->second.calls == 0 || it->second.writes > 0) continue;
-        if (name == stopped) continue;  // the runaway finding says why it drew nothing
+        if (std::find(skip.begin(), skip.end(), name) != skip.end()) continue;
         const bool did_run = std::find(ran.begin(), ran.end(), name) != ran.end();
         const StudentFunction* f = find_function(suite, name);
         std::string msg = function_label(suite, name) + (did_run ? " ran (the work it counted is not zero) but" : "") +
@@ -333,7 +334,8 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
         const bool line = stopped_function.find("line") != std::string::npos;
         const std::string check = stopped_function.empty() ? "its stop condition (for a line, the step signs; for a fill, the box's "
                                                              "clamping)"
-                                  : line ? "its stop condition (the step signs)"
+                                  : line ? "its stop condition (the step signs; and an endpoint that is NaN or "
+                                           "infinite, which must be rejected before the loop)"
                                          : "(for a fill) whether the box it loops over is clamped to the image";
         runaway.message = where + " was stopped after " + std::to_string(kStrayWriteBudget) +
                           " writes outside the image: a loop runs past its end point. Check the loop's bounds and " + check +
@@ -342,7 +344,9 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
         findings.insert(findings.begin(), runaway);
     }
     if (!judgement.upstream_failed) {
-        const NothingDrawn nothing = nothing_drawn_findings(suite, student, reference, judgement.ran, stopped_function);
+        std::vector<std::string> skip = judgement.may_draw_nothing;
+        if (!stopped_function.empty()) skip.push_back(stopped_function);
+        const NothingDrawn nothing = nothing_drawn_findings(suite, student, reference, judgement.ran, skip);
         // The runaway, if any, stays first: it is why the rest of the scene was not drawn. So do
         // the judge's findings that name an earlier TODO than the functions that drew nothing
         // (the skeleton's m2.edge_and_box: snap's TODO 1 before fill_triangle's TODO 4).

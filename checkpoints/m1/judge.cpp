@@ -461,6 +461,27 @@ struct Checker {
                 "TODOs 3-4", kEndpointHint);
             return;
         }
+        if (missing.size() >= 2 && plan.exact) {
+            // The whole line one pixel right, down, or both: the endpoints' pixels were found
+            // with round() (or a cast after adding 0.5), not floor().
+            for (const Pix d : {Pix{1, 1}, Pix{1, 0}, Pix{0, 1}}) {
+                std::size_t shifted = 0;
+                for (Pix p : plan.required) {
+                    const Pix q{p.x + d.x, p.y + d.y};
+                    shifted += q.x < img.width() && q.y < img.height() && img.at(q.x, q.y) == plan.color;
+                }
+                if (10 * shifted < 9 * plan.required.size()) continue;
+                const std::string where = d.x && d.y ? "right and down" : d.x ? "to the right" : "down";
+                add("pixel grid", plan.name + ": " + std::to_string(missing.size()) + " of its " +
+                                      std::to_string(plan.required.size()) + " certain pixels are missing, and the "
+                                      "line is drawn one pixel " + where + " instead: the pixel that contains a "
+                                      "point is (floor(x), floor(y)), while round() (or adding 0.5 before the cast) "
+                                      "picks the next one whenever the fraction is .5 or more",
+                    "TODO 4", "Pixel (x, y) covers [x, x + 1) x [y, y + 1): take the endpoints' pixels with "
+                              "std::floor, then run Bresenham between them.");
+                return;
+            }
+        }
         if (missing.size() >= 2 && plan.exact && mirrored(plan, missing)) {
             const bool x_major = std::llabs(plan.p1.x - plan.p0.x) >= std::llabs(plan.p1.y - plan.p0.y);
             add("step sign", plan.name + ": " + std::to_string(missing.size()) + " of its " +
@@ -615,7 +636,9 @@ struct Checker {
                 add("wu major axis", msg.str(), "TODO 5", kMajorAxisHint);
             } else {
                 msg << "With a == b the slope is 0 / 0 = NaN: use slope 0 when b.x == a.x, and keep x as the major "
-                       "axis (|dx| >= |dy|)";
+                       "axis (|dx| >= |dy|). If you weight the end columns, the weight must not reach 0 here: the "
+                       "textbook's gap 1 - frac(x + 0.5) is 1 on a column center, while the segment's length inside "
+                       "the column is 0";
                 add("zero length", msg.str(), "TODO 5",
                     "With a == b, use slope 0 (dy / dx would be 0 / 0 = NaN) and keep x as the major axis: "
                     "the column whose center is a.x is covered like any other.");
@@ -732,16 +755,21 @@ void attribute_stray_writes(const Scene& scene, const cp::Artifacts& art, cp::Ju
                              "draw_line asked to write " + n + " outside the image, though every line it "
                              "draws here lies inside the image, so clipping has nothing to cut: the loop "
                              "walks away from the line. A step in the wrong direction does this (x -= sx "
-                             "where x += sx is meant, or a step sign fixed at +1)",
+                             "where x += sx is meant, or a step sign fixed at +1), and so does an error term "
+                             "that takes the minor step at the wrong times (a reversed sign test, or an update "
+                             "without its factor 2), which drifts off the line by 45 degrees",
                              "Each step moves toward the end pixel: x += sx and y += sy, with sx and sy the "
-                             "signs of x1 - x0 and y1 - y0, in both branches. Check which lines are wrong in "
-                             "diff.png: the steep ones, or the shallow ones.",
+                             "signs of x1 - x0 and y1 - y0, in both branches; and the minor step comes only when "
+                             "the error term says so (lesson section 4). Check which lines are wrong in diff.png: "
+                             "the steep ones, or the shallow ones.",
                              "TODO 3"});
         } else if (name == "draw_line") {
             named.push_back({"clipping",
                              "draw_line asked to write " + n + " outside the image: clip the segment "
                              "to the rectangle of pixel centers (in double) before converting to int, so the "
-                             "loop only walks visible pixels",
+                             "loop only walks visible pixels; a coordinate that became NaN or infinite before "
+                             "the conversion (0 / 0 on a zero-length line, an unchecked NaN endpoint) does "
+                             "this too",
                              "", "TODOs 2, 4"});
         } else {
             named.push_back({"clipping", name + " asked to write " + n + " outside the image"});
@@ -770,10 +798,36 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
         case Kind::kOutcodes:
             check.check_outcodes();
             break;
-        case Kind::kLines:
+        case Kind::kLines: {
             for (const Segment& seg : s.lines) plans.push_back(make_plan(seg, s.width, s.height, false));
             check.check_lines(plans);
+            for (std::size_t i = 0; s.clip_nonfinite && i < s.lines.size(); ++i) {
+                const auto it = art.values.find("nonfinite_clip." + std::to_string(i));
+                if (it == art.values.end() || it->second == 0) continue;
+                const Segment& g = s.lines[i];
+                j.findings.push_back({"clipping",
+                                      "clip_line(" + str(g.a) + ", " + str(g.b) + ") returned true: a segment "
+                                      "with a NaN or infinite endpoint must return false (draw_line may test "
+                                      "first, but clip_line's own rule says so: NaN compares false with "
+                                      "everything, so its outcode looks inside)",
+                                      "Test std::isfinite on all four coordinates at the top of clip_line and "
+                                      "return false.",
+                                      "TODO 2"});
+            }
+            // A function whose every line here is one lines.h does not place (both endpoints
+            // far away: only safety is tested) may draw nothing at all.
+            for (const bool aa : {false, true}) {
+                bool any = false, all_unjudged = true;
+                for (std::size_t i = 0; i < s.lines.size(); ++i) {
+                    const Segment& g = s.lines[i];
+                    if (g.aa != aa || !raster::is_finite(g.a) || !raster::is_finite(g.b)) continue;
+                    any = true;
+                    all_unjudged &= plans[i].unjudged;
+                }
+                if (any && all_unjudged) j.may_draw_nothing.push_back(aa ? "draw_line_aa" : "draw_line");
+            }
             break;
+        }
         case Kind::kClip: {
             // The picture: each whole line, the viewport border and each clipped part, all drawn
             // with draw_line. Judged as bands: the numbers from clip_line are judged exactly.

@@ -36,6 +36,16 @@ void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
                 raster::Image& rev = out.images["reversed"] = cp::guarded_image(s.width, s.height);
                 for (const Segment& seg : s.lines) draw(out, rev, seg, true);
             }
+            if (s.clip_nonfinite) {
+                const m1::Rect r{0.5, 0.5, s.width - 0.5, s.height - 0.5};
+                for (std::size_t i = 0; i < s.lines.size(); ++i) {
+                    const Segment& seg = s.lines[i];
+                    if (seg.aa || (raster::is_finite(seg.a) && raster::is_finite(seg.b))) continue;
+                    Vec2 a = seg.a, b = seg.b;
+                    const bool kept = cp::traced(out, "clip_line", [&] { return m1::clip_line(a, b, r); });
+                    out.values["nonfinite_clip." + std::to_string(i)] = kept;
+                }
+            }
             break;
         case Kind::kOutcodes: {
             const m1::Rect r = to_rect(s.viewport);

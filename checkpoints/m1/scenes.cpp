@@ -367,6 +367,7 @@ std::vector<Scene> make_scenes() {
                    line({-kInf, -kInf}, {kInf, kInf}, red), line({kNaN, kNaN}, {kNaN, kNaN}, red),
                    aa_line({3, 3}, {kNaN, 30}, red),        aa_line({-kInf, 9}, {kInf, 9}, red),
                    line(px(2, 28), px(29, 16), white),      aa_line({2.5, 20.3}, {29.5, 24.8}, yellow)};
+        s.clip_nonfinite = true;
         all.push_back(s);
     }
     {

@@ -44,6 +44,9 @@ struct Scene {
     bool disjoint = false;        // no two lines share a pixel: exact per-line checks apply
     Box viewport;                 // kOutcodes and kClip
     bool demo = false;            // shown in the gallery and drawn by the demo program
+    // kLines: also call clip_line on each aliased line with a NaN or infinite endpoint
+    // (against the image's rectangle of pixel centers): it must return false.
+    bool clip_nonfinite = false;
 };
 
 const std::vector<Scene>& scenes();
