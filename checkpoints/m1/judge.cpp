@@ -681,9 +681,22 @@ struct Checker {
                 const int want = outcode_oracle({x + 0.5, y + 0.5}, scene.viewport);
                 if (img.at(x, y) != outcode_color(want) && wrong++ == 0) {
                     std::ostringstream s;
+                    auto name = [](int code) {
+                        std::string n = code == 0 ? "inside" : "";
+                        for (const auto& [bit, word] : {std::pair{1, "LEFT"}, {2, "RIGHT"}, {4, "TOP"}, {8, "BOTTOM"}}) {
+                            if (code & bit) n += (n.empty() ? "" : " ") + std::string(word);
+                        }
+                        return n;
+                    };
                     s << "the pixel center (" << x + 0.5 << ", " << y + 0.5 << ") should get outcode " << want
-                      << " (" << (want == 0 ? "inside" : "") << (want & 1 ? "LEFT " : "") << (want & 2 ? "RIGHT " : "")
-                      << (want & 4 ? "TOP " : "") << (want & 8 ? "BOTTOM " : "") << ")";
+                      << " (" << name(want) << ")";
+                    // The picture colors each outcode 0..10 in its own color: read the student's back.
+                    for (int code = 0; code <= 15; ++code) {
+                        if (code != want && img.at(x, y) == outcode_color(code) && outcode_color(code) != Color{}) {
+                            s << ", yours gave " << code << " (" << name(code) << ")";
+                            break;
+                        }
+                    }
                     first = s.str();
                 }
             }
