@@ -413,7 +413,15 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
                 report << "  judged wrong: " << plural(double(pc.judged_wrong), "pixel")
                        << " where the pixel rules below decide (red in diff.png)\n";
             }
-            if (pc.strict_diffs > 0) {
+            // An empty picture (one color, where the expected one has more): say so, rather
+            // than count its pixels as a rounding question in the ambiguous band.
+            const bool empty = one_color(actual) && !one_color(expected) && (pc.strict_diffs > 0 || pc.over_limit);
+            if (empty) {
+                findings.push_back({"image", "nothing is drawn: the picture is one color, and " +
+                                                 plural(double(m.differing_pixels), "pixel") +
+                                                 " of the expected image differ from it"});
+            }
+            if (pc.strict_diffs > 0 && !empty) {
                 findings.push_back(
                     {"image", plural(double(pc.strict_diffs), "pixel") + (pc.strict_diffs == 1 ? " differs" : " differ") +
                                   " from the expected image where every correct "
@@ -421,7 +429,7 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
                                   std::to_string(pc.first_x) + ", " + std::to_string(pc.first_y) +
                                   "). Bright red pixels in diff.png show them all."});
             }
-            if (pc.lenient_diffs > tol.max_lenient_diffs) {
+            if (pc.lenient_diffs > tol.max_lenient_diffs && !empty) {
                 const std::string by = tol.strict_channel_diff > 0
                                            ? " by more than " + plural(double(tol.strict_channel_diff), "level")
                                            : "";
