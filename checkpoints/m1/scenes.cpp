@@ -265,8 +265,10 @@ std::vector<Scene> make_scenes() {
         s.hint = "For steep lines swap the roles of x and y: step along y and split coverage "
                  "between two horizontally adjacent pixels.";
         s.disjoint = true;
+        // The last one goes right while it goes up: x and y disagree, so ordering a steep
+        // line's endpoints by x (not y) runs its y loop backwards.
         s.lines = {aa_line({4.2, 2.5}, {12.9, 61.5}), aa_line({21.3, 60.2}, {20.6, 3.1}),
-                   aa_line({30.0, 2.0}, {52.0, 61.0})};
+                   aa_line({30.0, 2.0}, {52.0, 61.0}), aa_line({57.5, 61.0}, {61.2, 3.4})};
         all.push_back(s);
     }
 
