@@ -192,6 +192,10 @@ struct Suite {
     std::function<void(std::uint64_t seed)> use_variant;
     std::vector<StudentFunction> functions;    // the milestone's TODO table (see traced())
     std::map<std::string, TopicAdvice> topics;  // per-finding advice, by topic
+    // Optional: what the n-th call (from 1) of a function draws on a scene, such as "the line
+    // from (2.5, 3.5) to (40.5, 9.5)", for the watchdog's and the runaway's findings; empty
+    // when the judge side cannot tell. A pure function of the scene, like the judge.
+    std::function<std::string(const std::string& id, const std::string& function, long long call)> describe_call;
 };
 
 // Registers one Catch2 test case per checkpoint of the suite (named by its id, tagged with

@@ -132,7 +132,14 @@ std::string which_call(long long call) {
 }
 
 // The finding for a render the watchdog stopped.
-Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
+// ", drawing the line from (..) to (..)" when the suite can tell what that call draws.
+std::string call_subject(const Suite& suite, const std::string& id, const std::string& function, long long call) {
+    if (!suite.describe_call || function.empty()) return "";
+    const std::string what = suite.describe_call(id, function, call);
+    return what.empty() ? "" : " (drawing " + what + ")";
+}
+
+Finding stopped_finding(const Suite& suite, const std::string& id, const StoppedCall& s) {
     std::ostringstream msg;
     if (s.function.empty()) {
         msg << "the render did not finish within " << s.seconds
@@ -141,7 +148,7 @@ Finding stopped_finding(const Suite& suite, const StoppedCall& s) {
     }
     const StudentFunction* f = find_function(suite, s.function);
     msg << function_label(suite, s.function) << " was still running after " << s.seconds << " s, in its "
-        << which_call(s.call) << ", having written " << plural(double(s.writes), "pixel") << " in that call";
+        << which_call(s.call) << call_subject(suite, id, s.function, s.call) << ", having written " << plural(double(s.writes), "pixel") << " in that call";
     if (s.stray_writes > 0) msg << " and " << s.stray_writes << " outside the image";
     msg << ": most likely an endless loop, so the watchdog stopped it";
     Finding out{f && !f->loop_topic.empty() ? f->loop_topic : "endless loop", msg.str()};
@@ -312,7 +319,7 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
 
     Judgement judgement;
     if (student.stopped) {
-        judgement.findings.push_back(stopped_finding(suite, student.stopped_call));
+        judgement.findings.push_back(stopped_finding(suite, id, student.stopped_call));
     } else {
         judgement = suite.judge(id, student, reference, expected);
     }
@@ -326,7 +333,7 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
             const std::string name = in->first.substr(std::string(kRunawayInKey).size());
             stopped_function = name;
             const long long call = static_cast<long long>(in->second);
-            where = function_label(suite, name) + ", in its " + which_call(call) + ",";
+            where = function_label(suite, name) + ", in its " + which_call(call) + call_subject(suite, id, name, call) + ",";
             const StudentFunction* f = find_function(suite, name);
             runaway.todo = f ? todo_label(f->todos) : "";
         }

@@ -9,8 +9,13 @@
 
 namespace {
 
-[[maybe_unused]] const bool registered = cp::register_suite(
-    cp::make_suite("m1", m1cp::scenes, m1cp::student::render, m1cp::reference::render, m1cp::judge,
-                   m1cp::functions(), {}, m1cp::use_variant));
+cp::Suite suite() {
+    cp::Suite s = cp::make_suite("m1", m1cp::scenes, m1cp::student::render, m1cp::reference::render, m1cp::judge,
+                                 m1cp::functions(), {}, m1cp::use_variant);
+    s.describe_call = m1cp::describe_call;
+    return s;
+}
+
+[[maybe_unused]] const bool registered = cp::register_suite(suite());
 
 }  // namespace

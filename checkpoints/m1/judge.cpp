@@ -793,6 +793,32 @@ void attribute_stray_writes(const Scene& scene, const cp::Artifacts& art, cp::Ju
 
 }  // namespace
 
+std::string describe_call(const std::string& id, const std::string& function, long long call) {
+    const Scene& s = scene(id);
+    const auto line_text = [](Vec2 a, Vec2 b) { return "the line from " + str(a) + " to " + str(b); };
+    if (s.kind == Kind::kLines && (function == "draw_line" || function == "draw_line_aa")) {
+        // Every segment of its kind in order, then (check_reversed) again from b to a.
+        std::vector<const Segment*> mine;
+        for (const Segment& g : s.lines) {
+            if (g.aa == (function == "draw_line_aa")) mine.push_back(&g);
+        }
+        const long long n = static_cast<long long>(mine.size());
+        if (call < 1 || n == 0 || call > (s.check_reversed ? 2 * n : n)) return "";
+        const Segment& g = *mine[std::size_t((call - 1) % n)];
+        return call <= n ? line_text(g.a, g.b) : line_text(g.b, g.a);
+    }
+    if (s.kind == Kind::kClip && function == "draw_line") {
+        // The whole lines, then the viewport's four sides; the clipped parts after them.
+        const long long n = static_cast<long long>(s.lines.size());
+        if (call >= 1 && call <= n) return line_text(s.lines[std::size_t(call - 1)].a, s.lines[std::size_t(call - 1)].b);
+        const Box& v = s.viewport;
+        const Vec2 corners[] = {{v.xmin, v.ymin}, {v.xmax, v.ymin}, {v.xmax, v.ymax}, {v.xmin, v.ymax}};
+        const long long k = call - n - 1;
+        if (k >= 0 && k < 4) return "the viewport's side from " + str(corners[k]) + " to " + str(corners[(k + 1) % 4]);
+    }
+    return "";
+}
+
 cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::Artifacts& /*reference*/,
                     const raster::Image& /*expected*/) {
     const Scene& s = scene(id);
