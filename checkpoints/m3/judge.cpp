@@ -437,6 +437,7 @@ void judge_group(Group g, Ctx& c) {
                                            "edges (a, b) of cur, keep a when da >= 0, add the crossing when (da >= 0) != "
                                            "(db >= 0); return cur";
             }
+            bool crossing_told = false;  // the crossing formula is explained once
             for (std::size_t k = 0; k < tris.size() && !(all_empty && ref_any); ++k) {
                 const std::string key = "poly" + std::to_string(k);
                 const auto a = polygon(v, key), b = polygon(c.ref, key);
@@ -445,7 +446,43 @@ void judge_group(Group g, Ctx& c) {
                                          str(tris[k][2]) + " gave " + std::to_string(a.size()) + " vertices, expected " +
                                          std::to_string(b.size());
                 const std::string touching = on_a_plane(tris[k]);
-                if (beyond_near(a)) {
+                // As many vertices as the reference's, but other points: which ones are kept is
+                // right (the inside test), where the new ones are is not (the crossing).
+                std::string wrong_point;
+                const double sc = std::max(scale_of(a), scale_of(b));
+                auto has = [sc](const std::vector<Vec4>& p, Vec4 q) {
+                    return std::any_of(p.begin(), p.end(), [&](Vec4 r) { return same4(r, q, sc); });
+                };
+                // The triangle's own vertices that the reference keeps are all in yours (a crossing
+                // computed from the wrong end may land on an outside vertex: that is no inside test).
+                const bool same_kept = std::all_of(tris[k].begin(), tris[k].end(), [&](Vec4 q) { return has(a, q) || !has(b, q); });
+                if (a.size() == b.size() && a.size() >= 3 && same_kept && !beyond_near(a)) {
+                    for (std::size_t i = 0; i < a.size() && wrong_point.empty(); ++i) {
+                        if (std::none_of(b.begin(), b.end(), [&](Vec4 q) { return same4(a[i], q, sc); })) {
+                            wrong_point = "your vertex " + std::to_string(i) + ", " + str(a[i]) + ", is none of the expected points";
+                        }
+                    }
+                    for (const Vec4& q : b) {
+                        if (std::none_of(a.begin(), a.end(), [&](Vec4 p) { return same4(p, q, sc); })) {
+                            wrong_point += (wrong_point.empty() ? "" : ", and ") + std::string("the expected point ") +
+                                           str(q) + " is missing";
+                            break;
+                        }
+                    }
+                }
+                if (!wrong_point.empty()) {
+                    c.add("clipping", "TODO 7a: " + what + ", but not the same points: " + wrong_point +
+                                          (crossing_told ? ": a crossing point again"
+                                                         : ". The triangle's vertices inside the volume are all there, so "
+                                                           "the inside test looks right; the crossing points are wrong. "
+                                                           "On the edge from a to b (da >= 0 > db, or the other way), "
+                                                           "t = da / (da - db) is measured FROM a: the crossing is "
+                                                           "a + (b - a) * t, where t = 0 gives a and t = 1 gives b "
+                                                           "(b + (a - b) * t starts from the wrong end)"));
+                    crossing_told = true;
+                    c.j.findings.back().hint = "the crossing of edge a-b with a plane: t = da / (da - db), then "
+                                               "a + (b - a) * t: interpolate from a, the vertex whose distance is da";
+                } else if (beyond_near(a)) {
                     c.add("near plane", "TODO 7a: " + what + "; some lie outside the near plane (z < -w or w <= 0): clip "
                                         "against z >= -w too, or points behind the camera reach the divide");
                 } else if (!touching.empty()) {
