@@ -261,12 +261,37 @@ void judge_group(Group g, Ctx& c) {
             c.point("ry90", "builders", "TODO 2: rotate_y(pi / 2) applied to +z must give +x");
             break;
         }
-        case Group::kRodrigues:
-            c.matrix("r111", "rotation", "TODO 2b: rotate((1, 1, 1), 120 degrees) must cycle x -> y -> z");
-            c.matrix("rz", "rotation", "TODO 2b: rotate((0, 0, 2), 0.7) must equal rotate_z(0.7) (normalize the axis)");
+        case Group::kRodrigues: {
+            // A matrix that is the reference's transposed turns by -angle: the sin terms (the
+            // cross-product matrix K) have the wrong sign. Said as such, not as "normalize".
+            bool transposed = false;
+            auto rotation = [&](const char* key, const std::string& what, const std::string& otherwise) {
+                const Matrix a = mat(v, key), b = mat(c.ref, key);
+                if (same(a, b)) return;
+                if (same(a, transpose(b)) && !same(b, transpose(b))) {
+                    transposed = true;
+                    c.add("rotation", "TODO 2b: " + what + ": got " + str(a) + ", expected " + str(b) +
+                                          ". Yours is the expected matrix transposed, the rotation by MINUS the angle: it "
+                                          "turns the other way, so the sin terms have the wrong sign. With k the unit "
+                                          "axis, R = cos(a) I + (1 - cos(a)) k k^T + sin(a) K, where K = [0 -kz ky; kz 0 "
+                                          "-kx; -ky kx 0]: m[0][1] gets - sin(a) kz and m[1][0] + sin(a) kz");
+                } else {
+                    c.add("rotation", "TODO 2b: " + what + otherwise + ": got " + str(a) + ", expected " + str(b));
+                }
+            };
+            rotation("r111", "rotate((1, 1, 1), 120 degrees) must cycle x -> y -> z", "");
+            rotation("rz", "rotate((0, 0, 2), 0.7) must equal rotate_z(0.7)", " (normalize the axis)");
             c.matrix("zero", "rotation", "TODO 2b: rotate about the zero axis must give the identity (not NaN)");
-            c.matrix("general", "rotation", "TODO 2b: rotate((1, -2, 0.5), 1.3)");
+            rotation("general", "rotate((1, -2, 0.5), 1.3)", "");
+            if (transposed) {
+                for (cp::Finding& f : c.j.findings) {
+                    if (f.topic == "rotation") f.hint = "the sin terms' sign: a positive angle turns counter-clockwise "
+                                                        "seen from the axis's tip, so rotate((0, 0, 1), a) must equal "
+                                                        "rotate_z(a), whose m[0][1] is -sin(a)";
+                }
+            }
             break;
+        }
         case Group::kComposition: {
             const Vec3 tr = vec3(v, "tr");
             if (!same3(tr, {3, 1, 0})) {
