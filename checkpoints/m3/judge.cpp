@@ -269,12 +269,15 @@ void judge_group(Group g, Ctx& c) {
                 const Matrix a = mat(v, key), b = mat(c.ref, key);
                 if (same(a, b)) return;
                 if (same(a, transpose(b)) && !same(b, transpose(b))) {
-                    transposed = true;
                     c.add("rotation", "TODO 2b: " + what + ": got " + str(a) + ", expected " + str(b) +
-                                          ". Yours is the expected matrix transposed, the rotation by MINUS the angle: it "
-                                          "turns the other way, so the sin terms have the wrong sign. With k the unit "
-                                          "axis, R = cos(a) I + (1 - cos(a)) k k^T + sin(a) K, where K = [0 -kz ky; kz 0 "
-                                          "-kx; -ky kx 0]: m[0][1] gets - sin(a) kz and m[1][0] + sin(a) kz");
+                                          (std::string(key) == "rz" ? " (yours equals rotate_z(-0.7))" : "") +
+                                          (transposed ? ": transposed again, the sin terms' sign"
+                                                      : ". Yours is the expected matrix transposed, the rotation by MINUS "
+                                                        "the angle: it turns the other way, so the sin terms have the "
+                                                        "wrong sign. With k the unit axis, R = cos(a) I + (1 - cos(a)) "
+                                                        "k k^T + sin(a) K, where K = [0 -kz ky; kz 0 -kx; -ky kx 0]: "
+                                                        "m[0][1] gets - sin(a) kz and m[1][0] + sin(a) kz"));
+                    transposed = true;
                 } else {
                     c.add("rotation", "TODO 2b: " + what + otherwise + ": got " + str(a) + ", expected " + str(b));
                 }
