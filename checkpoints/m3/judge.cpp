@@ -324,19 +324,73 @@ void judge_group(Group g, Ctx& c) {
                 } else if (ok != 1) {
                     c.add("inverse", "TODO 3a: matrix " + std::to_string(k) + " is invertible, but inverse() returned false");
                 } else {
-                    c.matrix(key, "inverse", "TODO 3a: the inverse of matrix " + std::to_string(k) +
-                                                 (k == 1 ? " (its first pivot needs a row swap)" : ""));
+                    const Matrix a = mat(v, key), b = mat(c.ref, key);
+                    // Every entry of the right size, some of the wrong sign: the cofactors' signs.
+                    bool sizes = true;
+                    for (int i = 0; i < 4; ++i) {
+                        for (int j = 0; j < 4; ++j) sizes &= close(std::abs(a[i][j]), std::abs(b[i][j]));
+                    }
+                    const std::string what = "TODO 3a: the inverse of matrix " + std::to_string(k) +
+                                             (k == 1 ? " (its first pivot needs a row swap)" : "");
+                    if (same(a, b)) continue;
+                    if (sizes) {
+                        c.add("inverse", what + ": got " + str(a) + ", expected " + str(b) +
+                                             ". Every entry has the right size, but some have the wrong sign. With "
+                                             "cofactors, cofactor (i, j) is (-1)^(i + j) times the minor without row i "
+                                             "and column j (a checkerboard of signs, not one sign per column or row), "
+                                             "and the inverse is the TRANSPOSED cofactor matrix divided by det");
+                        c.j.findings.back().hint = "cofactors: inverse[i][j] = (-1)^(i + j) * minor(j, i) / det; "
+                                                   "Gauss-Jordan: pivot on the largest |entry| of the column";
+                    } else {
+                        c.matrix(key, "inverse", what);
+                    }
                 }
             }
-            c.matrix("rigid", "inverse", "TODO 3b: rigid_inverse of rotate_z(0.5) with translation (3, -1, 2)");
+            {
+                const Matrix a = mat(v, "rigid"), b = mat(c.ref, "rigid");
+                if (!same(a, b)) {
+                    // The rotation part right, the last column -t instead of -R^T t.
+                    bool rot_ok = true;
+                    for (int i = 0; i < 4; ++i) {
+                        for (int j = 0; j < 3; ++j) rot_ok &= close(a[i][j], b[i][j]);
+                    }
+                    const bool minus_t = rot_ok && close(a[0][3], -3) && close(a[1][3], 1) && close(a[2][3], -2);
+                    c.add("inverse", "TODO 3b: rigid_inverse of rotate_z(0.5) with translation t = (3, -1, 2): got " +
+                                         str(a) + ", expected " + str(b) +
+                                         (minus_t ? ". The rotation part is right (R^T), but the last column is -t; it "
+                                                    "must be -R^T t: the inverse first undoes the move (-t), then the "
+                                                    "turn (R^T), so R^T turns the move back as well"
+                                                  : ""));
+                    c.j.findings.back().hint = "rigid_inverse: R^T in the upper-left 3x3, -R^T t in the last column, "
+                                               "0 0 0 1 below; no elimination (the inverse of [R t] is [R^T -R^T t])";
+                }
+            }
             break;
         }
         case Group::kNearSingular: {
             const Matrix a = near_singular_matrix();
             if (get(v, "ok") != 1) {
                 c.add("inverse", "TODO 3a: this matrix (condition number 1e12) is invertible, but inverse() returned false: "
-                                 "is your singularity threshold absolute, or too large?");
+                                 "is your singularity threshold absolute, or too large? With Gauss-Jordan, compare each "
+                                 "pivot with a threshold relative to the entries (the reference: 1e-14 times the largest "
+                                 "|entry|). With cofactors, no threshold on det carries over: det is about 1e-24 here "
+                                 "(the product of all pivots), so call the matrix singular only when det == 0 or when det "
+                                 "or an entry of the result is not finite");
+                c.j.findings.back().hint = "singular means: a pivot <= 1e-14 * largest |entry| (Gauss-Jordan), or det "
+                                           "== 0 / a non-finite result (cofactors); never a fixed threshold";
                 break;
+            }
+            // Every entry of the right size, some of the wrong sign: the cofactors' signs.
+            bool sizes = get(c.ref, "ok") == 1;
+            bool signs = false;
+            {
+                const Matrix mi = mat(v, "inv"), ri = mat(c.ref, "inv");
+                for (int i = 0; i < 4; ++i) {
+                    for (int j = 0; j < 4; ++j) {
+                        sizes &= close(std::abs(mi[i][j]), std::abs(ri[i][j]), 1e-3);
+                        signs |= std::abs(ri[i][j]) > 1e-9 * std::max(1.0, std::abs(ri[i][j])) && (mi[i][j] > 0) != (ri[i][j] > 0);
+                    }
+                }
             }
             const Matrix r = mul(a, mat(v, "inv"));
             double worst = 0;
@@ -351,9 +405,18 @@ void judge_group(Group g, Ctx& c) {
             }
             c.j.measures["residual |M M^-1 - I|"] = worst;
             if (!(worst <= 1e-3)) {
-                c.add("inverse", "TODO 3a: |M * inverse(M) - I| = " + num(worst) +
-                                     " (at most 1e-3 allowed for condition 1e12): pivot on the largest |entry| of "
-                                     "each column, in double");
+                if (sizes && signs) {
+                    c.add("inverse", "TODO 3a: |M * inverse(M) - I| = " + num(worst) +
+                                         " (at most 1e-3 allowed for condition 1e12): every entry of your inverse has "
+                                         "the right size, but some have the wrong sign. With cofactors, cofactor (i, j) "
+                                         "is (-1)^(i + j) times its minor, and the inverse is the TRANSPOSED cofactor "
+                                         "matrix divided by det");
+                    c.j.findings.back().hint = "cofactors: inverse[i][j] = (-1)^(i + j) * minor(j, i) / det";
+                } else {
+                    c.add("inverse", "TODO 3a: |M * inverse(M) - I| = " + num(worst) +
+                                         " (at most 1e-3 allowed for condition 1e12): pivot on the largest |entry| of "
+                                         "each column, in double");
+                }
             }
             break;
         }
