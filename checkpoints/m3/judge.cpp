@@ -840,10 +840,15 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
                          "near: the faces cover each other in another order. draw_model must fill the triangles in the "
                          "order painter_order returns: model.triangles[order[0]] first (the farthest), then "
                          "model.triangles[order[1]] and so on; not in list order, not backwards, and not triangle k "
-                         "where order[k] is meant" +
+                         "where order[k] is meant. Another cause: painter_order must be given the VIEW-space "
+                         "triangles, view * model_matrix * p (after the view matrix, before the projection). "
+                         "Clip-space z (after the projection) or screen z grows the other way for a perspective, so "
+                         "sorting by it puts the near faces first" +
                              std::string(clipped_any ? ". (If the faces do overlap in the right order, look at where "
                                                        "draw_model clips: in clip space, before the divide.)"
                                                      : ""));
+        c.j.findings.back().hint = "order = painter_order of the VIEW-space triangles (view * model_matrix * p, before "
+                                   "the projection), then fill model.triangles[order[0]], [order[1]], ... in that order";
     } else if (camera_ok && clipper_ok && clipped_any && !use_wrong && culled_ok) {
         const raster::Image& expected = c.expected;
         const auto it = art.images.find("main");
