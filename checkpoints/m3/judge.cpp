@@ -772,8 +772,18 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
                 why = ": this scene does not need that stage (Needs), so draw_model must not run it";
             } else if (key == "stats.triangles_clipped" && ref == 0) {
                 why = ": every vertex is inside the view volume, so nothing needs clipping";
+            } else if (key == "stats.triangles_clipped" && mine < ref && get(c.mine, "stats.triangles_culled") > 0) {
+                why = ": fewer triangles reached the clipper than the reference's. One possible cause: draw_model "
+                      "culls whole triangles before clipping them. Clipping comes first, in clip space; then each "
+                      "fan triangle of the clipped polygon goes to the screen and is culled there (a triangle "
+                      "crossing the near plane has no screen position before it is clipped, so its winding is "
+                      "not known yet). Count a triangle as clipped when not all three of its vertices are inside";
             }
             c.add(st[1], "TODO 11: " + num(mine) + " " + st[2] + ", expected " + num(ref) + why);
+            if (key == "stats.triangles_clipped" && mine < ref && get(c.mine, "stats.triangles_culled") > 0) {
+                c.j.findings.back().hint = "per triangle: clip (if not all inside), fan, to_screen, THEN cull each fan "
+                                           "triangle; culling never comes before clipping";
+            }
         }
     }
     // The clipper on the scene's own triangles (scenes with one panel and small items).
