@@ -426,7 +426,8 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
             if (empty) {
                 findings.push_back({"image", "nothing is drawn: the picture is one color, and " +
                                                  plural(double(m.differing_pixels), "pixel") +
-                                                 " of the expected image differ from it"});
+                                                 " of the expected image differ from it" +
+                                                 (pc.over_limit ? "; none is tolerated: all are red in diff.png" : "")});
             }
             if (pc.strict_diffs > 0 && !empty) {
                 findings.push_back(
