@@ -201,9 +201,6 @@ std::vector<const BugPicture*> diagnose(const BugLibrary& lib, const std::string
     return out;
 }
 
-namespace {
-
-// The TODO numbers in `text`'s "TODO 8", "TODOs 2 and 8", "TODOs 1-2" (3a counts as 3).
 std::set<int> todo_numbers(const std::string& text) {
     std::set<int> out;
     static const std::regex label(R"(TODOs? ([0-9]+[a-z]?((, | and |-)[0-9]+[a-z]?)*))");
@@ -217,8 +214,6 @@ std::set<int> todo_numbers(const std::string& text) {
     }
     return out;
 }
-
-}  // namespace
 
 bool steers_diagnosis(const std::string& finding) {
     return finding.find("fix TODO") != std::string::npos || finding.find(kPassOwnChecks) != std::string::npos;

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,9 @@ DiagnosisRates measure_rates(const BugLibrary& lib, const std::vector<raster::Im
 // Whether a printed finding steers the diagnosis: it sends the student to another TODO first
 // ("fix TODO 7 first") or says the functions a picture is drawn with pass their own checks.
 bool steers_diagnosis(const std::string& finding);
+
+// The TODO numbers in `text`'s "TODO 8", "TODOs 2 and 8", "TODOs 1-2" (3a counts as 3).
+std::set<int> todo_numbers(const std::string& text);
 
 // Whether a checkpoint's findings leave known bug `b` in the diagnosis (see diagnosis_for).
 bool findings_admit(const KnownBug& b, const std::vector<std::string>& findings);

@@ -2,7 +2,6 @@
 #include "harness/verdict.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -163,16 +162,10 @@ Finding stopped_finding(const Suite& suite, const std::string& id, const Stopped
 // "not written yet" hint, in `after`: the judge's own findings, which say why, come first. The
 // functions in `skip` are left out: the one a runaway loop stopped (the runaway finding
 // explains it) and those the judge allows to draw nothing (Judgement::may_draw_nothing).
-// The lowest TODO number in a label ("TODO 4", "TODOs 2, 4", "TODO 4b or 6"); 1000 for none.
+// The lowest TODO number a label names ("TODO 4", "TODOs 2, 4"); 1000 for none.
 int lowest_todo(const std::string& label) {
-    int lowest = 1000;
-    for (std::size_t i = 0; i < label.size(); ++i) {
-        if (!std::isdigit(static_cast<unsigned char>(label[i])) || (i > 0 && std::isdigit(static_cast<unsigned char>(label[i - 1])))) {
-            continue;
-        }
-        lowest = std::min(lowest, std::atoi(label.c_str() + i));
-    }
-    return lowest;
+    const std::set<int> todos = todo_numbers(label);
+    return todos.empty() ? 1000 : *todos.begin();
 }
 
 struct NothingDrawn {

@@ -14,7 +14,6 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -233,12 +232,10 @@ std::string report_block(const std::filesystem::path& log_path, const std::strin
 // The lowest TODO number the findings name ("[snap] (TODO 1) ...", "(TODOs 2, 4)", "fix TODO 3
 // first"); a large number when none does.
 int lowest_todo(const std::vector<std::string>& findings) {
-    static const std::regex todo(R"(TODOs? ([0-9]+))");
     int lowest = 1000;
     for (const std::string& f : findings) {
-        for (auto it = std::sregex_iterator(f.begin(), f.end(), todo); it != std::sregex_iterator(); ++it) {
-            lowest = std::min(lowest, std::stoi((*it)[1].str()));
-        }
+        const std::set<int> todos = cp::todo_numbers(f);
+        if (!todos.empty()) lowest = std::min(lowest, *todos.begin());
     }
     return lowest;
 }

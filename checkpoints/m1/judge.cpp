@@ -149,6 +149,9 @@ const char* const kDrawingNotClippingHint =
     "clip_line is right on this scene, so the drawing is wrong: make the octant checkpoints "
     "(m1.octant_1 ... m1.octant_8) pass first, checking the step signs sx and sy.";
 constexpr double kUnresolved = 1e12;
+constexpr const char* kStepSignHint =
+    "Each step moves toward the end pixel: x += sx and y += sy, with sx and sy the signs of x1 - x0 and y1 - y0, "
+    "in both branches (the steep one and the shallow one).";
 
 // How far v lies outside [0, size] (0 inside).
 double outside_by(double v, double size) { return v < 0 ? -v : v > size ? v - size : 0.0; }
@@ -490,8 +493,7 @@ struct Checker {
                                  "mirrored across its first pixel: the minor axis (" + (x_major ? "y" : "x") +
                                  " here) steps the wrong way",
                 "TODO 3",
-                "Each step moves toward the end pixel: x += sx and y += sy, with sx and sy the signs of "
-                "x1 - x0 and y1 - y0, in both branches (the steep one and the shallow one).");
+                kStepSignHint);
             return;
         }
         if (!missing.empty() && missing.size() == plan.required.size()) {
@@ -919,8 +921,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
                         ": the line below whose pixels are mirrored walks out of the image, because a step "
                         "goes the wrong way. (Once every line steps the right way, any stray writes left are "
                         "lines that were not clipped.)";
-            f.hint = "Each step moves toward the end pixel: x += sx and y += sy, with sx and sy the signs of "
-                     "x1 - x0 and y1 - y0, in both branches (the steep one and the shallow one).";
+            f.hint = kStepSignHint;
         }
     }
     if (s.check_reversed) {
