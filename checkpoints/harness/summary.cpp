@@ -262,8 +262,12 @@ int main(int argc, char** argv) {
     }
     // CTest's own output (every checkpoint's full report) goes to a log file; the terminal gets
     // the first failing checkpoint in full and one line for each of the others (the table).
+    // CTest runs in the checkpoints' own folder (where the student checkpoints are declared), so
+    // its Testing/ logs stay there: a `make check` started from the project's test suite (which
+    // runs in the build folder) leaves that suite's Testing/Temporary/LastTest.log alone.
     const std::filesystem::path log_path = build / "check_log.txt";
-    const std::string command = std::string("\"") + argv[1] + "\" --test-dir \"" + build.string() + "\" -L '" +
+    const std::string command = std::string("\"") + argv[1] + "\" --test-dir \"" +
+                                (build / "checkpoints").string() + "\" -L '" +
                                 argv[3] + "' --output-on-failure --parallel 2 > \"" + log_path.string() + "\" 2>&1";
     std::cout << "Running the checkpoints (full output: " << log_path.string() << ") ..." << std::endl;
     const int ctest_status = std::system(command.c_str());
