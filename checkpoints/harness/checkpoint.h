@@ -300,9 +300,17 @@ bool one_color(const raster::Image& img);
 raster::Image guarded_image(int width, int height);
 
 // The judge's first look: the main image if it exists and has the scene's size (otherwise the
-// harness reports the problem), and a finding for any stray write.
-const raster::Image* main_image_for_judging(const Artifacts& art, int width, int height, Judgement& j,
-                                            const std::string& stray_topic, const std::string& stray_advice);
+// harness reports the problem), with the tolerance masks made to that size.
+const raster::Image* main_image_for_judging(const Artifacts& art, int width, int height, Judgement& j);
+
+// The findings for writes outside the image (Image::stray_writes): one for each function of the
+// trace that made some, as `per_function(name, count)` words it (the judge knows each function's
+// usual cause and TODO), and, for writes no traced function made, `unattributed` with "your code
+// asked to write N pixels outside the image (Image::stray_writes): " before its message. None
+// without stray writes.
+using StrayFinding = std::function<Finding(const std::string& function, long long count)>;
+std::vector<Finding> stray_write_findings(const Artifacts& art, const StrayFinding& per_function,
+                                          const Finding& unattributed);
 
 // Finds the scene with the given id in a milestone's list.
 template <typename Scene>

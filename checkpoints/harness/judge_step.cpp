@@ -158,8 +158,9 @@ Finding stopped_finding(const Suite& suite, const std::string& id, const Stopped
 
 // One finding per function that the reference drew with on this scene and the code under test
 // called without drawing anything: most often a TODO not written yet.
-// A function in `ran` (Judgement::ran) is said to have drawn nothing though it ran, without the
-// "not written yet" hint, in `after`: the judge's own findings, which say why, come first. The
+// A function in `ran` (Judgement::ran), or one that wrote only outside the image, is said to have
+// drawn nothing though it ran, without the "not written yet" hint, in `after`: the judge's own
+// findings (the stray writes, the wrong numbers), which say why, come first. The
 // functions in `skip` are left out: the one a runaway loop stopped (the runaway finding
 // explains it) and those the judge allows to draw nothing (Judgement::may_draw_nothing).
 // The lowest TODO number a label names ("TODO 4", "TODOs 2, 4"); 1000 for none.
@@ -187,15 +188,23 @@ NothingDrawn nothing_drawn_findings(const Suite& suite, const Artifacts& student
         if (ref.writes == 0 || it == student.trace.end() || it->second.calls == 0 || it->second.writes > 0) continue;
         if (std::find(skip.begin(), skip.end(), name) != skip.end()) continue;
         const bool did_run = std::find(ran.begin(), ran.end(), name) != ran.end();
+        // Writes outside the image show the code is written too: it computed pixels, all off
+        // the image (the judge's stray-write finding says why).
+        const bool wrote_outside = it->second.stray_writes > 0;
         const StudentFunction* f = find_function(suite, name);
         std::string msg = function_label(suite, name) + (did_run ? " ran (the work it counted is not zero) but" : "") +
-                          " drew nothing" + (it->second.stray_writes > 0 ? " inside the image" : "") + " in " +
+                          " drew nothing" + (wrote_outside ? " inside the image" : "") + " in " +
                           plural(double(it->second.calls), "call") + "; the reference draws " +
                           plural(double(ref.writes), "pixel") + " with it on this scene";
-        if (did_run) msg += ", so its TODO is written but what it computed put nothing on screen";
+        if (did_run) {
+            msg += ", so its TODO is written but what it computed put nothing on screen";
+        } else if (wrote_outside) {
+            msg += ", and every pixel it asked for (" + plural(double(it->second.stray_writes), "write") +
+                   ") was outside the image, so its TODO is written but computes the wrong pixels";
+        }
         Finding finding{"nothing drawn", msg};
         finding.todo = f ? todo_label(f->todos) : "";
-        if (did_run) {
+        if (did_run || wrote_outside) {
             out.after.push_back(finding);
             continue;
         }

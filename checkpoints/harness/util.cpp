@@ -75,17 +75,31 @@ std::string expected_png_path(const std::string& milestone, const std::string& i
     return (dir / milestone / (id + ".png")).string();
 }
 
-const raster::Image* main_image_for_judging(const Artifacts& art, int width, int height, Judgement& j,
-                                            const std::string& stray_topic, const std::string& stray_advice) {
+const raster::Image* main_image_for_judging(const Artifacts& art, int width, int height, Judgement& j) {
     j.tolerance.lenient = raster::Mask(width, height);
     j.tolerance.wrong = raster::Mask(width, height);
     const auto it = art.images.find("main");
     if (it == art.images.end() || it->second.width() != width || it->second.height() != height) return nullptr;
-    if (art.stray_writes > 0) {
-        j.findings.push_back({stray_topic, "your code asked to write " + plural(double(art.stray_writes), "pixel") +
-                                               " outside the image (Image::stray_writes): " + stray_advice});
-    }
     return &it->second;
+}
+
+std::vector<Finding> stray_write_findings(const Artifacts& art, const StrayFinding& per_function,
+                                          const Finding& unattributed) {
+    std::vector<Finding> out;
+    if (art.stray_writes <= 0) return out;
+    long long attributed = 0;
+    for (const auto& [name, t] : art.trace) {
+        if (t.stray_writes <= 0) continue;
+        attributed += t.stray_writes;
+        out.push_back(per_function(name, t.stray_writes));
+    }
+    if (attributed < art.stray_writes) {
+        Finding f = unattributed;
+        f.message = "your code asked to write " + plural(double(art.stray_writes - attributed), "pixel") +
+                    " outside the image (Image::stray_writes): " + f.message;
+        out.push_back(std::move(f));
+    }
+    return out;
 }
 
 }  // namespace cp

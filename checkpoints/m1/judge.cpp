@@ -84,6 +84,7 @@ std::string describe_direction(long long dx, long long dy) {
 struct Plan {
     std::string name;  // "line from (..) to (..)" for messages
     Color color;
+    bool aa = false;     // drawn with draw_line_aa
     bool exact = false;  // pixel-exact Bresenham rules apply
     Pix p0, p1;          // exact: the endpoint pixels
     long long steps = 0;  // exact: max(|dx|, |dy|)
@@ -149,6 +150,10 @@ const char* const kDrawingNotClippingHint =
     "clip_line is right on this scene, so the drawing is wrong: make the octant checkpoints "
     "(m1.octant_1 ... m1.octant_8) pass first, checking the step signs sx and sy.";
 constexpr double kUnresolved = 1e12;
+// Why an outcode that puts the image's border outside breaks lines that stay inside the image.
+constexpr const char* kBorderWhy =
+    "draw_line clips every line to the rectangle of pixel centers with clip_line, which starts from "
+    "outcode(), so a line that touches that rectangle's border is clipped wrongly";
 constexpr const char* kStepSignHint =
     "Each step moves toward the end pixel: x += sx and y += sy, with sx and sy the signs of x1 - x0 and y1 - y0, "
     "in both branches (the steep one and the shallow one).";
@@ -306,6 +311,7 @@ Plan make_plan(const Segment& s, int w, int h, bool force_band) {
     Plan plan;
     plan.name = "line from " + str(s.a) + " to " + str(s.b);
     plan.color = s.color;
+    plan.aa = s.aa;
     if (!raster::is_finite(s.a) || !raster::is_finite(s.b)) return plan;  // draws nothing
     {
         const Vec2 d = s.b - s.a;
@@ -359,9 +365,16 @@ struct Checker {
     };
     std::vector<FarFailure> far_failures;
     std::size_t strays_at = 0;  // where the off-the-line finding is (or would be)
+    // Wu findings about a pixel that an aliased line may have overdrawn (see check_lines).
+    std::vector<cp::Finding> overdrawn_wu = {};
     // Clip scenes: clip_line returned the right points for every segment, so a line that
     // leaves its band was drawn wrong, not clipped wrong.
     bool clip_values_right = false;
+    // The code under test's outcode() puts a point on a rectangle's border outside (see
+    // border_probes): clipping goes wrong wherever a line touches that border, so a gap is
+    // not the drawing loop's.
+    bool outcode_border_wrong = false;
+    std::optional<cp::Finding> border_finding = std::nullopt;  // says so; kept if something shows it
     // draw_line wrote outside the image (its trace says so): a missing line whose mirror
     // image falls outside the picture has walked out of it (see mirrored()).
     bool draw_line_wrote_outside = false;
@@ -404,7 +417,19 @@ struct Checker {
             }
         }
         const std::size_t before = j.findings.size();
-        for (const Plan& plan : plans) check_plan(plan);
+        bool aliased_wrong = strays > 0;
+        for (const Plan& plan : plans) {
+            const std::size_t at = j.findings.size();
+            check_plan(plan);
+            aliased_wrong |= !plan.aa && j.findings.size() > at;
+        }
+        // A Wu pixel lit brighter than its line allows, in the full color of an aliased line of
+        // the scene or in no shade of the Wu line's own, while some aliased line is wrong: that
+        // line, drawn off its path, lit it.
+        // Its own finding says so; the Wu line is left alone.
+        for (const cp::Finding& f : overdrawn_wu) {
+            if (!aliased_wrong) add(f.topic, f.message, f.todo, f.hint);
+        }
         // A line from far away that is wrong where it crosses the image, while every ordinary
         // line is right: that is the precision of the far endpoint, not clipping in general.
         const bool others_fine = j.findings.size() == before;
@@ -535,7 +560,7 @@ struct Checker {
                     << " where it crosses the image have a pixel of it (a gap near " << str(*gap) << "). "
                     << (plan.far_both ? kFarBothClipLesson : kFarOneClipLesson);
                 far_failures.push_back({"clipping", message, why.str(), "TODOs 2, 4", "TODO 2", kFarClipHint});
-            } else if (clip_values_right) {
+            } else if (clip_values_right && !outcode_border_wrong) {
                 add("octant", plan.name + ": the line has a gap near " + str(*gap) + ", though clip_line returned the "
                               "right points for every line of this scene: the drawing loop leaves the line",
                     "TODO 3", kDrawingNotClippingHint);
@@ -647,6 +672,7 @@ struct Checker {
             }
             return;
         }
+        bool overdrawn = false;
         for (const Plan::Aa& e : plan.aa_expected) {
             if (claim(e.p) > 1) {  // another line crosses here: only the other checks apply
                 j.tolerance.lenient.set(e.p.x, e.p.y);
@@ -663,6 +689,22 @@ struct Checker {
             msg << plan.name << ": pixel " << str(e.p) << " has intensity " << int(std::max({got.r, got.g, got.b}))
                 << ", expected about " << int(std::max({want.r, want.g, want.b})) << " (coverage "
                 << e.coverage << ")";
+            const bool brighter = got.r > want.r + kTol || got.g > want.g + kTol || got.b > want.b + kTol;
+            const bool aliased_color = std::any_of(scene.lines.begin(), scene.lines.end(),
+                                                   [&](const Segment& g) { return !g.aa && g.color == got; });
+            // No shade of this line's color (Wu blends it over black): something else drew here.
+            const double cc = double(plan.color.r) * plan.color.r + double(plan.color.g) * plan.color.g +
+                              double(plan.color.b) * plan.color.b;
+            const double t = cc > 0 ? (double(got.r) * plan.color.r + double(got.g) * plan.color.g +
+                                       double(got.b) * plan.color.b) / cc
+                                    : 0.0;
+            const bool other_color = !near(got, raster::mix(raster::colors::black, plan.color, std::clamp(t, 0.0, 1.0)));
+            if (brighter && (aliased_color || other_color)) {
+                // Decided once every line is checked; the rest of this line is still judged.
+                if (!overdrawn) overdrawn_wu.push_back({"wu coverage", msg.str(), "", "TODO 5"});
+                overdrawn = true;
+                continue;
+            }
             if (plan.far) {
                 far_failures.push_back({"wu coverage", msg.str(), msg.str() + ". " + kFarWuLesson, "TODO 5", "TODO 5", kFarWuHint});
             } else if (e.coverage < 1.0 && near(got, swapped) && std::abs(e.coverage - 0.5) > 0.05) {
@@ -706,6 +748,32 @@ struct Checker {
         if (wrong > 0) add("outcode", cp::plural(double(wrong), "pixel center") + " got the wrong outcode; " + first, "TODO 1");
     }
 
+    // An outcode() that puts a point of a rectangle's border outside, found by the probes the
+    // render half asked about (values "<prefix><k>"): one finding, sending the student to
+    // m1.outcodes, put ahead of the gaps and wrong clip_line results it causes (and left out
+    // when the scene shows nothing wrong: its lines may never touch that border).
+    void check_border_outcodes(const cp::Artifacts& art, const std::string& prefix, const Box& box,
+                               const std::string& why) {
+        if (outcode_border_wrong) return;  // one such finding is enough
+        const std::vector<Vec2> probes = border_probes(box);
+        for (std::size_t k = 0; k < probes.size(); ++k) {
+            const auto it = art.values.find(prefix + std::to_string(k));
+            if (it == art.values.end() || it->second == 0) continue;
+            outcode_border_wrong = true;
+            std::ostringstream rect;
+            rect << "{" << box.xmin << ", " << box.ymin << ", " << box.xmax << ", " << box.ymax << "}";
+            const cp::Finding f{"outcode",
+                                "outcode(" + str(probes[k]) + ", " + rect.str() + ") gave " +
+                                    std::to_string(static_cast<long long>(it->second)) +
+                                    ", but that point lies on the rectangle's border, and the border is inside "
+                                    "(outcode 0)",
+                                "", "TODO 1"};
+            border_finding = cp::fix_first(f, "m1.outcodes", why,
+                                           "a point on the border is inside: compare with < and >, not <= and >=.");
+            return;
+        }
+    }
+
     void check_clip_values(const cp::Artifacts& art) {
         for (std::size_t i = 0; i < scene.lines.size(); ++i) {
             const Segment& s = scene.lines[i];
@@ -740,8 +808,6 @@ struct Checker {
     }
 };
 
-// The harness's stray-write finding names no function; the trace says which one wrote
-// outside the image, and each has its own usual cause.
 // Every line this scene draws with draw_line lies inside the image (in clip scenes, the
 // viewport and the clipped parts lie inside the whole lines' box): clipping has nothing to cut.
 bool draw_line_stays_inside(const Scene& s) {
@@ -749,48 +815,53 @@ bool draw_line_stays_inside(const Scene& s) {
     return std::all_of(s.lines.begin(), s.lines.end(), [&](const Segment& g) { return g.aa || (in(g.a) && in(g.b)); });
 }
 
-void attribute_stray_writes(const Scene& scene, const cp::Artifacts& art, cp::Judgement& j) {
-    if (art.stray_writes <= 0 || j.findings.size() != 1) return;
-    long long attributed = 0;
-    std::vector<cp::Finding> named;
-    for (const auto& [name, t] : art.trace) {
-        if (t.stray_writes <= 0) continue;
-        attributed += t.stray_writes;
-        const std::string n = cp::plural(double(t.stray_writes), "pixel");
-        if (name == "draw_line_aa") {
-            named.push_back({"clipping",
-                             "draw_line_aa asked to write " + n + " outside the image: where an "
-                             "anti-aliased line leaves the image through the top or bottom (left or right, for "
-                             "a steep line), one or both of a column's two pixels are outside it",
-                             "Test 0 <= row < height (for a steep line, the x against the width) before each "
-                             "blend, and skip a column whose t is out of range before converting it to int.",
-                             "TODO 5"});
-        } else if (name == "draw_line" && draw_line_stays_inside(scene)) {
-            named.push_back({"step sign",
-                             "draw_line asked to write " + n + " outside the image, though every line it "
-                             "draws here lies inside the image, so clipping has nothing to cut: the loop "
-                             "walks away from the line. A step in the wrong direction does this (x -= sx "
-                             "where x += sx is meant, or a step sign fixed at +1), and so does an error term "
-                             "that takes the minor step at the wrong times (a reversed sign test, or an update "
-                             "without its factor 2), which drifts off the line by 45 degrees",
-                             "Each step moves toward the end pixel: x += sx and y += sy, with sx and sy the "
-                             "signs of x1 - x0 and y1 - y0, in both branches; and the minor step comes only when "
-                             "the error term says so (lesson section 4). Check which lines are wrong in diff.png: "
-                             "the steep ones, or the shallow ones.",
-                             "TODO 3"});
-        } else if (name == "draw_line") {
-            named.push_back({"clipping",
-                             "draw_line asked to write " + n + " outside the image: clip the segment "
-                             "to the rectangle of pixel centers (in double) before converting to int, so the "
-                             "loop only walks visible pixels; a coordinate that became NaN or infinite before "
-                             "the conversion (0 / 0 on a zero-length line, an unchecked NaN endpoint) does "
-                             "this too",
-                             "", "TODOs 2, 4"});
-        } else {
-            named.push_back({"clipping", name + " asked to write " + n + " outside the image"});
-        }
+// What a function's writes outside the image mean (the trace says which function made them, and
+// each has its own usual cause). `step_sign`: the picture shows a line whose
+// pixels are mirrored, which walks out of the image however well the scene's lines are clipped.
+cp::Finding stray_finding(const Scene& scene, bool step_sign, const std::string& name, long long count) {
+    const std::string n = cp::plural(double(count), "pixel");
+    if (name == "draw_line_aa") {
+        return {"clipping",
+                "draw_line_aa asked to write " + n + " outside the image: where an "
+                "anti-aliased line leaves the image through the top or bottom (left or right, for "
+                "a steep line), one or both of a column's two pixels are outside it",
+                "Test 0 <= row < height (for a steep line, the x against the width) before each "
+                "blend, and skip a column whose t is out of range before converting it to int.",
+                "TODO 5"};
     }
-    if (attributed == art.stray_writes && !named.empty()) j.findings = named;
+    if (name == "draw_line" && draw_line_stays_inside(scene)) {
+        return {"step sign",
+                "draw_line asked to write " + n + " outside the image, though every line it "
+                "draws here lies inside the image, so clipping has nothing to cut: the loop "
+                "walks away from the line. A step in the wrong direction does this (x -= sx "
+                "where x += sx is meant, or a step sign fixed at +1), and so does an error term "
+                "that takes the minor step at the wrong times (a reversed sign test, or an update "
+                "without its factor 2), which drifts off the line by 45 degrees",
+                "Each step moves toward the end pixel: x += sx and y += sy, with sx and sy the "
+                "signs of x1 - x0 and y1 - y0, in both branches; and the minor step comes only when "
+                "the error term says so (lesson section 4). Check which lines are wrong in diff.png: "
+                "the steep ones, or the shallow ones.",
+                "TODO 3"};
+    }
+    if (name == "draw_line" && step_sign) {
+        // The scene has lines to clip, but a line stepping the wrong way walks out of the image
+        // anyway: its stray writes are the step sign's, not a clipping mistake's.
+        return {"step sign",
+                "draw_line asked to write " + n + " outside the image: the line below whose pixels are "
+                "mirrored walks out of the image, because a step goes the wrong way. (Once every line "
+                "steps the right way, any stray writes left are lines that were not clipped.)",
+                kStepSignHint, "TODO 3"};
+    }
+    if (name == "draw_line") {
+        return {"clipping",
+                "draw_line asked to write " + n + " outside the image: clip the segment "
+                "to the rectangle of pixel centers (in double) before converting to int, so the "
+                "loop only walks visible pixels; a coordinate that became NaN or infinite before "
+                "the conversion (0 / 0 on a zero-length line, an unchecked NaN endpoint) does "
+                "this too",
+                "", "TODOs 2, 4"};
+    }
+    return {"clipping", name + " asked to write " + n + " outside the image"};
 }
 
 }  // namespace
@@ -825,10 +896,8 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
                     const raster::Image& /*expected*/) {
     const Scene& s = scene(id);
     cp::Judgement j;
-    const Image* main = cp::main_image_for_judging(art, s.width, s.height, j, "clipping",
-                                                   "clip first, so the work stays proportional to the visible pixels");
+    const Image* main = cp::main_image_for_judging(art, s.width, s.height, j);
     if (main == nullptr) return j;  // the harness reports a missing or mis-sized image
-    attribute_stray_writes(s, art, j);
     const Image& img = *main;
     Checker check{s, img, j, {}, false, {}};
     const auto line_trace = art.trace.find("draw_line");
@@ -841,6 +910,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
             break;
         case Kind::kLines: {
             for (const Segment& seg : s.lines) plans.push_back(make_plan(seg, s.width, s.height, false));
+            check.check_border_outcodes(art, "border_outcode.", pixel_center_box(s.width, s.height), kBorderWhy);
             check.check_lines(plans);
             for (std::size_t i = 0; s.clip_nonfinite && i < s.lines.size(); ++i) {
                 const auto it = art.values.find("nonfinite_clip." + std::to_string(i));
@@ -899,6 +969,10 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
             }
             // The numbers first, to know whether a line off its band is a clipping mistake;
             // their findings still come after the picture's.
+            check.check_border_outcodes(art, "viewport_outcode.", v,
+                                        "clip_line starts from outcode(), so a segment that touches the viewport's "
+                                        "border is clipped wrongly");
+            check.check_border_outcodes(art, "border_outcode.", pixel_center_box(s.width, s.height), kBorderWhy);
             const std::size_t at = j.findings.size();
             check.check_clip_values(art);
             const std::vector<cp::Finding> clip_findings(j.findings.begin() + std::ptrdiff_t(at), j.findings.end());
@@ -909,21 +983,15 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
             break;
         }
     }
-    // A line stepping the wrong way walks out of the image: its stray writes are the step
-    // sign's, not a clipping mistake's, though this scene has lines to clip.
-    const auto is_step_sign = [](const cp::Finding& f) { return f.topic == "step sign"; };
-    if (std::any_of(j.findings.begin(), j.findings.end(), is_step_sign)) {
-        for (cp::Finding& f : j.findings) {
-            if (f.topic != "clipping" || f.message.rfind("draw_line asked to write", 0) != 0) continue;
-            f.topic = "step sign";
-            f.todo = "TODO 3";
-            f.message = f.message.substr(0, f.message.find(" outside the image") + 18) +
-                        ": the line below whose pixels are mirrored walks out of the image, because a step "
-                        "goes the wrong way. (Once every line steps the right way, any stray writes left are "
-                        "lines that were not clipped.)";
-            f.hint = kStepSignHint;
-        }
-    }
+    if (check.border_finding && !j.findings.empty()) j.findings.insert(j.findings.begin(), *check.border_finding);
+    // Writes outside the image, first: which function made them and why. A line stepping the
+    // wrong way (a step-sign finding above) walks out of the image whatever the clipping does.
+    const bool step_sign = std::any_of(j.findings.begin(), j.findings.end(),
+                                       [](const cp::Finding& f) { return f.topic == "step sign"; });
+    const std::vector<cp::Finding> strays = cp::stray_write_findings(
+        art, [&](const std::string& name, long long count) { return stray_finding(s, step_sign, name, count); },
+        {"clipping", "clip first, so the work stays proportional to the visible pixels"});
+    j.findings.insert(j.findings.begin(), strays.begin(), strays.end());
     if (s.check_reversed) {
         const auto rev = art.images.find("reversed");
         // (No reversed image after a runaway loop: the render stopped before drawing it, the

@@ -2,6 +2,8 @@
 // the code under test, so nothing here decides a verdict.
 #include "m1/render.h"
 
+#include <algorithm>
+
 #include "lines.h"
 #include "m1/scenes.h"
 
@@ -28,7 +30,21 @@ void draw(cp::Artifacts& out, raster::Image& img, const Segment& s, bool reverse
     }
 }
 
+// The code under test's outcodes of points on the rectangle's border (see border_probes).
+void probe_border(cp::Artifacts& out, const std::string& prefix, const Box& box) {
+    const m1::Rect r = to_rect(box);
+    const std::vector<Vec2> probes = border_probes(box);
+    for (std::size_t k = 0; k < probes.size(); ++k) {
+        out.values[prefix + std::to_string(k)] = cp::traced(out, "outcode", [&] { return m1::outcode(probes[k], r); });
+    }
+}
+
 void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
+    // draw_line clips every line to the rectangle of pixel centers (only scenes that use it ask:
+    // a scene of Wu lines alone needs no outcode).
+    if (std::any_of(s.lines.begin(), s.lines.end(), [](const Segment& g) { return !g.aa; })) {
+        probe_border(out, "border_outcode.", pixel_center_box(s.width, s.height));
+    }
     switch (s.kind) {
         case Kind::kLines:
             for (const Segment& seg : s.lines) draw(out, img, seg, false);
@@ -58,6 +74,7 @@ void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
             break;
         }
         case Kind::kClip: {
+            probe_border(out, "viewport_outcode.", s.viewport);
             const m1::Rect r = to_rect(s.viewport);
             for (const Segment& seg : s.lines) line(out, img, seg.a, seg.b, kUnclippedColor);
             const Box& v = s.viewport;

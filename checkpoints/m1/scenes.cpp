@@ -585,6 +585,12 @@ const std::vector<Scene>& scenes() { return variants().scenes(); }
 
 const Scene& scene(const std::string& id) { return cp::find_scene(scenes(), id); }
 
+std::vector<Vec2> border_probes(const Box& r) {
+    const double mx = (r.xmin + r.xmax) / 2, my = (r.ymin + r.ymax) / 2;
+    return {{r.xmin, r.ymin}, {mx, r.ymin}, {r.xmax, r.ymin}, {r.xmax, my},
+            {r.xmax, r.ymax}, {mx, r.ymax}, {r.xmin, r.ymax}, {r.xmin, my}};
+}
+
 Color outcode_color(int code) {
     // Inside is white; each side has a hue and the corners mix their two sides.
     switch (code) {

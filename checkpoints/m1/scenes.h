@@ -55,6 +55,14 @@ const std::vector<Scene>& scenes();
 void use_variant(std::uint64_t seed);
 const Scene& scene(const std::string& id);  // throws std::out_of_range for an unknown id
 
+// Points on a rectangle's border: its corners and the middles of its sides. The border is inside,
+// so outcode() must give each of them 0. Render halves ask the code under test for their
+// outcodes in the rectangle of pixel centers that draw_line clips every line to (values
+// "border_outcode.<k>") and, in clip scenes, in the viewport ("viewport_outcode.<k>"): an outcode
+// that puts the border outside explains gaps that neither the drawing nor clip_line's numbers do.
+std::vector<Vec2> border_probes(const Box& r);
+inline Box pixel_center_box(int width, int height) { return {0.5, 0.5, width - 0.5, height - 0.5}; }
+
 // Colors of the outcode picture, indexed by outcode (0..10; unused codes are black).
 Color outcode_color(int code);
 

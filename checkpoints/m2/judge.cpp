@@ -731,23 +731,19 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
                     const raster::Image& /*expected*/) {
     const Scene& s = scene(id);
     cp::Judgement j;
-    const Image* main = cp::main_image_for_judging(art, s.width, s.height, j, "bounding box",
-                                                   "clamp the bounding box to the image");
+    const Image* main = cp::main_image_for_judging(art, s.width, s.height, j);
     if (main == nullptr) return j;  // the harness reports a missing or mis-sized image
-    if (j.findings.size() == 1) {
-        // The stray writes: which functions made them (the trace says), and the TODO that
-        // clamps the box they loop over.
-        std::string who;
-        for (const auto& [name, t] : art.trace) {
-            if (t.stray_writes > 0) who += (who.empty() ? "" : " and ") + name;
-        }
-        if (!who.empty()) {
-            cp::Finding& f = j.findings.front();
-            f.message = who + f.message.substr(std::string("your code").size());
-            f.message += " (in bounding_box), and loop only over that box";
-            f.todo = "TODO 3";
-        }
-    }
+    // Stray writes: each function that made them (the trace says) loops over a box that was
+    // not clamped to the image, which TODO 3 does.
+    const auto stray = [](const std::string& function, long long count) {
+        return finding("bounding box",
+                       function + " asked to write " + cp::plural(double(count), "pixel") +
+                           " outside the image (Image::stray_writes): clamp the bounding box to the image (in "
+                           "bounding_box), and loop only over that box",
+                       "TODO 3");
+    };
+    j.findings = cp::stray_write_findings(
+        art, stray, finding("bounding box", "clamp the bounding box to the image, and loop only over that box", "TODO 3"));
     const Image& img = *main;
     std::vector<Shape> shapes;
     for (const Tri& t : s.tris) shapes.emplace_back(t);
