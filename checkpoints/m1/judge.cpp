@@ -355,6 +355,11 @@ struct Checker {
              const std::string& hint = "") {
         j.findings.push_back({topic, message, hint, todo});
     }
+    // Pixels of the lenient set (ties, bands, pinned ends) that a rule above rejected: diff.png
+    // shows their differences in red, as errors, not in blue as allowed (Tolerance::wrong).
+    void judged_wrong(const std::vector<Pix>& pixels) {
+        for (Pix p : pixels) j.tolerance.wrong.set(p.x, p.y);
+    }
 
     std::vector<int> claims;  // per pixel: how many lines may draw it (or expect it dark)
     bool zero_length_center_drawn = false;  // a zero-length Wu line at a pixel center is drawn
@@ -367,6 +372,7 @@ struct Checker {
     std::size_t strays_at = 0;  // where the off-the-line finding is (or would be)
     // Wu findings about a pixel that an aliased line may have overdrawn (see check_lines).
     std::vector<cp::Finding> overdrawn_wu = {};
+    std::vector<std::size_t> clip_wrong = {};  // clip scenes: segments clip_line got wrong
     // Clip scenes: clip_line returned the right points for every segment, so a line that
     // leaves its band was drawn wrong, not clipped wrong.
     bool clip_values_right = false;
@@ -535,6 +541,7 @@ struct Checker {
         }
         for (const auto& [a, b] : plan.ties) {
             if (!lit(img, a) && !lit(img, b)) {
+                judged_wrong({a, b});
                 add("octant", plan.name + ": the line passes exactly between " + str(a) + " and " +
                                   str(b) + "; one of them must be drawn",
                     "TODO 3");
@@ -546,8 +553,9 @@ struct Checker {
         for (const auto& band : plan.band_columns) {
             if (std::any_of(band.begin(), band.end(), [&](Pix p) { return lit(img, p); })) {
                 ++drawn_columns;
-            } else if (!gap) {
-                gap = band[band.size() / 2];
+            } else {
+                judged_wrong(band);  // a column with no pixel: red in diff.png, not "allowed"
+                if (!gap) gap = band[band.size() / 2];
             }
         }
         if (gap) {
@@ -572,6 +580,7 @@ struct Checker {
         // After the gap: a line that leaves its band also misses its end pixel.
         for (Pix p : plan.pinned_ends) {
             if (lit(img, p)) continue;
+            judged_wrong({p});
             add("endpoint", plan.name + ": endpoint pixel " + str(p) + " is not drawn; both endpoints belong to the line",
                 "TODOs 3-4", kEndpointHint);
             return;
@@ -791,6 +800,7 @@ struct Checker {
                                                 " to " + str(want->second)
                                           : ", but the segment misses the viewport"),
                     "TODO 2");
+                clip_wrong.push_back(i);
                 continue;
             }
             if (!kept) continue;
@@ -803,6 +813,7 @@ struct Checker {
                 add("clipping", call + " gave " + str(a) + " - " + str(b) + ", expected " + str(want->first) +
                                     " - " + str(want->second) + " (a stays on a's side)",
                     "TODO 2");
+                clip_wrong.push_back(i);
             }
         }
     }
@@ -979,6 +990,9 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
             j.findings.erase(j.findings.begin() + std::ptrdiff_t(at), j.findings.end());
             check.clip_values_right = clip_findings.empty();
             check.check_lines(plans);
+            // The picture of a segment clip_line got wrong differs along the whole line (the
+            // first plans): those differences are errors the numbers explain, not allowed ones.
+            for (const std::size_t i : check.clip_wrong) check.judged_wrong(plans[i].candidates);
             j.findings.insert(j.findings.end(), clip_findings.begin(), clip_findings.end());
             break;
         }
