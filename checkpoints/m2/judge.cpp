@@ -209,6 +209,43 @@ public:
 
     std::string name() const { return "triangle " + str(v_[0]) + " " + str(v_[1]) + " " + str(v_[2]); }
 
+    // As listed, is the triangle clockwise on screen (negative signed area)?
+    bool clockwise() const { return drawable_ && sign_ < 0; }
+
+    // What a student's fill computes on the snapped vertices (as snap() pins them), at the
+    // point (qx, qy) in sixteenths: the three edge values with the top-left rule. For the
+    // pictures of typical mistakes, which sample at points other than pixel centers.
+    bool snapped_covers(long long qx, long long qy) const {
+        if (!drawable_) return false;
+        const i128 g[3][2] = {{s_[0][0], s_[0][1]}, {s_[1][0], s_[1][1]}, {s_[2][0], s_[2][1]}};
+        const i128 q[2] = {qx, qy};
+        const i128 area = cross(g[0], g[1], g[2]);
+        if (area == 0) return false;
+        for (int i = 0; i < 3; ++i) {
+            const int a = area > 0 ? i : (3 - i) % 3, b = area > 0 ? (i + 1) % 3 : (2 - i + 3) % 3;
+            const i128 e = cross(g[a], g[b], q);
+            const i128 dy = g[b][1] - g[a][1], dx = g[b][0] - g[a][0];
+            if (e < 0 || (e == 0 && !((dy == 0 && dx > 0) || dy < 0))) return false;
+        }
+        return true;
+    }
+
+    // bounding_box() of the snapped vertices, clamped to a w x h image: [x0, x1) x [y0, y1),
+    // false when empty.
+    bool snapped_box(int w, int h, int& x0, int& y0, int& x1, int& y1) const {
+        if (!drawable_) return false;
+        auto range = [&](int axis, int size, int& first, int& end) {
+            const long long lo = std::min({s_[0][axis], s_[1][axis], s_[2][axis]});
+            const long long hi = std::max({s_[0][axis], s_[1][axis], s_[2][axis]});
+            auto floor_div = [](long long a) { return a >= 0 ? a / 16 : -((-a + 15) / 16); };
+            first = int(std::clamp<long long>(-floor_div(-(lo - 8)), 0, size));  // ceil((lo - 8) / 16)
+            end = int(std::clamp<long long>(floor_div(hi - 8) + 1, 0, size));
+        };
+        range(0, w, x0, x1);
+        range(1, h, y0, y1);
+        return x0 < x1 && y0 < y1;
+    }
+
 private:
     static i128 cross(const i128 a[2], const i128 b[2], const i128 p[2]) {
         return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
@@ -407,7 +444,27 @@ std::string str_exact(const double v[3]) {
     return m.str();
 }
 
-void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image& img, cp::Judgement& j) {
+// What judge_pixels saw, for the findings judged after it.
+struct PixelStats {
+    long long wrong = 0;      // pixels judged wrong (not anti-aliased, not lenient)
+    long long cw = 0;         // pixels whose expected top triangle is clockwise as listed
+    long long cw_wrong = 0;   // ... of them wrong
+};
+
+// The picture one typical mistake draws with solid triangles, compared with the student's:
+// `explained` collects the wrong pixels it draws the same way, `apart` counts the pixels where
+// the two disagree about being wrong (wrong in one picture only, or wrong in another color).
+struct MistakeModel {
+    Tally explained;
+    long long apart = 0;
+    double match() const { return explained.count == 0 ? 0 : double(explained.count) / double(explained.count + apart); }
+    // Names the mistake when it explains nearly every wrong pixel, and nearly every pixel it
+    // changes is wrong in the student's picture too.
+    bool names_it() const { return explained.count >= 3 && match() >= 0.8; }
+};
+
+void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image& img, cp::Judgement& j,
+                  PixelStats& stats) {
     const std::string topic = generic_topic(s.id);
     // Advice per kind of mistake; the generic topics of m2.huge, m2.degenerate and m2.nonfinite
     // keep their scene's hint.
@@ -474,6 +531,67 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
     Tally aa_rule{"fill rule", "have" + aa_rule_rest, "has" + aa_rule_rest, "TODO 4b or 6",
                   "Test each sample with the same covers() as a pixel center: a sample on an edge counts only for a "
                   "top or left edge; m2.top_left checks covers() alone."};
+    // Two mistakes of fill_triangle's loop move pixels far beyond the edges' ties, so the
+    // fill-rule and coverage tallies would misname them; their pictures are computed here
+    // (solid triangles only, where a pixel's color says which triangle drew it):
+    //  * sampling pixel (x, y) at its top-left corner, 16x and 16y in sixteenths: every edge
+    //    moves half a pixel right and down, along its whole length;
+    //  * an incremental walk whose steps are the per-sixteenth change of each edge function
+    //    instead of the per-pixel one (16 times it): from the first center of the box, pixel
+    //    (x0 + i, y0 + j) sees the point i and j SIXTEENTHS further, the triangle magnified 16
+    //    times about that center.
+    const bool solid_only = !s.tris.empty() && std::all_of(s.tris.begin(), s.tris.end(), [](const Tri& t) {
+        return t.aa == 0 && !t.gradient;
+    });
+    struct Box {
+        bool any = false;
+        int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    };
+    std::vector<Box> boxes(shapes.size());
+    for (std::size_t k = 0; k < shapes.size(); ++k) {
+        Box& b = boxes[k];
+        b.any = shapes[k].snapped_box(s.width, s.height, b.x0, b.y0, b.x1, b.y1);
+    }
+    auto corner_picture = [&](int x, int y) {
+        Color c = raster::colors::black;
+        for (std::size_t k = 0; k < shapes.size(); ++k) {
+            if (shapes[k].snapped_covers(16LL * x, 16LL * y)) c = s.tris[k].c[0];
+        }
+        return c;
+    };
+    auto unscaled_step_picture = [&](int x, int y) {
+        Color c = raster::colors::black;
+        for (std::size_t k = 0; k < shapes.size(); ++k) {
+            const Box& b = boxes[k];
+            if (!b.any || x < b.x0 || x >= b.x1 || y < b.y0 || y >= b.y1) continue;
+            if (shapes[k].snapped_covers(16LL * b.x0 + 8 + (x - b.x0), 16LL * b.y0 + 8 + (y - b.y0))) c = s.tris[k].c[0];
+        }
+        return c;
+    };
+    MistakeModel at_corner{Tally{"pixel center",
+        "are wrong exactly as if each pixel were tested at its top-left corner (x, y) instead of its center "
+        "(x + 0.5, y + 0.5): every edge of your triangles sits half a pixel too far right and down, along its whole "
+        "length, not only where a center lies exactly on it. triangles.h pins the pixel center; the loop of TODO 4c "
+        "(fill_triangle) must test the point 16x + 8, 16y + 8 in sixteenths, not 16x, 16y",
+        "is wrong exactly as if each pixel were tested at its top-left corner (x, y) instead of its center "
+        "(x + 0.5, y + 0.5). triangles.h pins the pixel center; the loop of TODO 4c (fill_triangle) must test the "
+        "point 16x + 8, 16y + 8 in sixteenths, not 16x, 16y",
+        "TODO 4c",
+        "Pixel (x, y) is covered when its center is: Fixed{16 * x + 8, 16 * y + 8}, that is kSubpixelSteps * x + "
+        "kSubpixelSteps / 2 on each axis."}};
+    MistakeModel unscaled_step{Tally{"incremental steps",
+        "are wrong exactly as if the edge values were stepped in the wrong units: moving one pixel right changes "
+        "edge a->b by -(b.y - a.y) times the pixel's width in sixteenths, 16, but your steps add -(b.y - a.y) "
+        "alone, the change for one SIXTEENTH. So the picture is each triangle magnified 16 times about the first "
+        "pixel of its box. In the loop of TODO 4c (fill_triangle), multiply both steps by kSubpixelSteps (or "
+        "compute each center's edge values anew)",
+        "is wrong exactly as if the edge values were stepped in the wrong units: one pixel right changes edge "
+        "a->b by -(b.y - a.y) * 16, not -(b.y - a.y). In the loop of TODO 4c (fill_triangle), multiply both steps "
+        "by kSubpixelSteps",
+        "TODO 4c",
+        "A pixel is kSubpixelSteps sixteenths wide: the step of edge a->b per pixel is -(b.y - a.y) * 16 to the "
+        "right and (b.x - a.x) * 16 downward, since the edge values are in (1/16 pixel)^2."}};
+
     bool has_aa = false, has_gradient = false;
     for (Tally* t : {&missing, &missing_gradient, &extra, &rule, &last_row, &colors, &aa_wrong, &aa_unwritten, &aa_box,
                      &aa_rule, &aa_set}) {
@@ -514,6 +632,20 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
             }
             const int tol = gradient_top && !e.gradient_exact ? 2 : 0;  // off the grid: snapping moves weights
             const bool ok = e.gradient_exact && gradient_top ? within(got, e.grad_lo, e.grad_hi, 0) : near(got, e.want, tol);
+            const bool cw = e.top >= 0 && shapes[std::size_t(e.top)].clockwise();
+            stats.wrong += !ok;
+            stats.cw += cw;
+            stats.cw_wrong += cw && !ok;
+            if (solid_only) {
+                for (auto [model, picture] : {std::pair{&at_corner, corner_picture(x, y)},
+                                              std::pair{&unscaled_step, unscaled_step_picture(x, y)}}) {
+                    if (!ok && got == picture) {
+                        model->explained.add(x, y);
+                    } else if (!ok || picture != e.want) {
+                        ++model->apart;
+                    }
+                }
+            }
             if (ok) continue;
             if (e.on_edge && !near(e.alt_flip, e.want, 2) && near(got, e.alt_flip, gradient_top ? 2 : 0)) {
                 rule.add(x, y);
@@ -565,6 +697,16 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
     if (aa_unwritten.count > 0 && aa_box.count > 0) {
         aa_unwritten.count += aa_box.count;
         aa_box.count = 0;
+    }
+    // One of the two loop mistakes above explains the picture: it leads, and the fill-rule
+    // finding goes (its pixels are among the ones it names; the ties were not the problem).
+    const MistakeModel* lead = nullptr;
+    for (const MistakeModel* m : {&at_corner, &unscaled_step}) {
+        if (m->names_it() && (lead == nullptr || m->match() > lead->match())) lead = m;
+    }
+    if (lead != nullptr) {
+        lead->explained.report(j);
+        rule.count = 0;
     }
     for (const Tally* t : {&rule, &aa_rule, &last_row, &aa_box, &missing, &missing_gradient, &extra, &colors, &aa_unwritten, &aa_set, &aa_wrong}) {
         t->report(j);
@@ -749,7 +891,8 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
     for (const Tri& t : s.tris) shapes.emplace_back(t);
     // The numbers' findings come first (m2.edge_and_box: TODOs 1-3 before the picture's 4).
     const std::size_t numbers_at = j.findings.size();
-    judge_pixels(s, shapes, img, j);
+    PixelStats stats;
+    judge_pixels(s, shapes, img, j, stats);
     if (!s.tris.empty()) measure_area_error(s, shapes, img, j);
     if (s.watertight) {
         const auto count = art.images.find("count");
@@ -791,13 +934,28 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
         } else if (differ > 0 || (!sized && art.values.count(cp::kRunawayKey) == 0)) {
             // (No other_winding image after a runaway loop: the render stopped before drawing
             // it, the runaway finding says so, and there is nothing to compare.)
-            j.findings.push_back(finding("winding",
+            // When the main picture's errors are the clockwise triangles, wholesale (nearly all
+            // of their pixels wrong, nearly every wrong pixel theirs), the winding is the cause
+            // and leads: a precision or coverage finding about the same pixels would send the
+            // student elsewhere (m2.huge's generic topic is "precision").
+            const bool clockwise_wrong = stats.cw_wrong > 0 && stats.cw_wrong * 10 >= stats.cw * 9 &&
+                                         stats.cw_wrong * 10 >= stats.wrong * 9;
+            j.findings.insert(clockwise_wrong ? j.findings.begin() + std::ptrdiff_t(numbers_at) : j.findings.end(),
+                              finding("winding",
                                          "listing each triangle's vertices in the other order changed " +
                                              cp::plural(double(differ), "pixel") +
                                              " (see other_winding.png): both windings must give the same pixels",
                                          "TODO 4a",
-                                         "If the signed area is negative, swap v1 and v2 (and, in fill_triangle_gradient, "
-                                         "their colors) before testing; do not skip the triangle or flip the fill rule."));
+                                         clockwise_wrong
+                                             ? "Your clockwise triangles (negative signed area as listed) are wrong nearly "
+                                               "everywhere, the others right: set_up must swap two vertices (v1 and v2; "
+                                               "in fill_triangle_gradient, their colors too) when the area is negative. Skipping such a triangle, or making its area "
+                                               "positive (|area|) without the swap, draws none of it: unswapped, the "
+                                               "vertices stay clockwise, so every edge function has the wrong sign inside "
+                                               "and no center passes."
+                                             : "If the signed area is negative, swap v1 and v2 (and, in "
+                                               "fill_triangle_gradient, their colors) before testing; do not skip the "
+                                               "triangle or flip the fill rule."));
         }
     }
     if (!s.numbers.snaps.empty() || !s.numbers.boxes.empty()) {
