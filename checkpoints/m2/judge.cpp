@@ -457,10 +457,16 @@ struct PixelStats {
 struct MistakeModel {
     Tally explained;
     long long apart = 0;
+    long long off_ties = 0;  // explained pixels whose center is not exactly on an edge
     double match() const { return explained.count == 0 ? 0 : double(explained.count) / double(explained.count + apart); }
-    // Names the mistake when it explains nearly every wrong pixel, and nearly every pixel it
-    // changes is wrong in the student's picture too.
-    bool names_it() const { return explained.count >= 3 && match() >= 0.8; }
+    // Names the mistake when it explains nearly every wrong pixel, nearly every pixel it changes
+    // is wrong in the student's picture too, and some of those pixels have their center off
+    // every edge. A fill-rule mistake changes only centers exactly on an edge (ties), and where
+    // a scene puts many centers on edges, moving the edges half a pixel flips much the same
+    // ones: pixels off the ties tell the two apart (the mistakes here move whole edges).
+    bool names_it() const {
+        return explained.count >= 3 && match() >= 0.8 && off_ties >= 3 && off_ties * 20 >= explained.count;
+    }
 };
 
 void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image& img, cp::Judgement& j,
@@ -641,6 +647,7 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
                                               std::pair{&unscaled_step, unscaled_step_picture(x, y)}}) {
                     if (!ok && got == picture) {
                         model->explained.add(x, y);
+                        model->off_ties += !e.on_edge;
                     } else if (!ok || picture != e.want) {
                         ++model->apart;
                     }
