@@ -750,6 +750,15 @@ struct Checker {
                             break;
                         }
                     }
+                    // A center exactly on a side: the border is inside (< and >, not <= and >=).
+                    const Box& v = scene.viewport;
+                    const double cx = x + 0.5, cy = y + 0.5;
+                    const char* side = cx == v.xmin ? "x = xmin" : cx == v.xmax ? "x = xmax"
+                                     : cy == v.ymin ? "y = ymin" : cy == v.ymax ? "y = ymax" : nullptr;
+                    if (side != nullptr) {
+                        s << ": that center lies exactly on the rectangle's border (" << side
+                          << "), and the border is inside: compare with < and >, not <= and >=";
+                    }
                     first = s.str();
                 }
             }
