@@ -469,8 +469,15 @@ Verdict judge_once(const Suite& suite, const std::string& id, const Artifacts& s
     if (!findings.empty()) {
         // The hint follows the first finding (the likeliest cause), not the scene: a scene that
         // fails because a TODO it also needs is empty should say so, not hint at its own topic.
-        const std::string own = finding_hint(suite, findings.front());
-        rec.hint = own.empty() ? suite.hint(id) : own;
+        std::string own = finding_hint(suite, findings.front());
+        // "Not written yet" (the only "nothing drawn" finding with a hint of its own) is wrong
+        // for a function that is written but returns early on this scene's input, such as a
+        // zero-length line: the scene's hint follows, for that case.
+        const std::string scene_hint = suite.hint(id);
+        if (findings.front().topic == "nothing drawn" && !findings.front().hint.empty() && !scene_hint.empty()) {
+            own += ". If that code is written already: " + scene_hint;
+        }
+        rec.hint = own.empty() ? scene_hint : own;
         if (diagnose && !expected.empty() && main_it != student.images.end()) {
             rec.diagnosis = diagnosis_for(suite.milestone, id, main_it->second, expected, rec.findings);
         }
