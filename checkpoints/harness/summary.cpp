@@ -229,15 +229,24 @@ std::string report_block(const std::filesystem::path& log_path, const std::strin
     return block;
 }
 
-// The lowest TODO number the findings name ("[snap] (TODO 1) ...", "(TODOs 2, 4)", "fix TODO 3
-// first"); a large number when none does.
-int lowest_todo(const std::vector<std::string>& findings) {
-    int lowest = 1000;
+// The TODO to fix first by these findings: the lowest one the first finding that names any
+// sends the student to ("[snap] (TODO 1) ...", "(TODOs 2, 4)", "fix TODO 3 first"); the first
+// finding is the judge's likeliest cause, later ones may be its consequences. A finding that
+// names alternatives ("(TODO 4b or 6)") counts as its last: it does not know the earlier one is
+// wrong. A large number when no finding names a TODO.
+int first_todo(const std::vector<std::string>& findings) {
     for (const std::string& f : findings) {
-        const std::set<int> todos = cp::todo_numbers(f);
-        if (!todos.empty()) lowest = std::min(lowest, *todos.begin());
+        // The label in parentheses after the topic, when there is one; else the whole line.
+        const std::size_t open = f.find("] (");
+        const std::size_t close = open == std::string::npos ? std::string::npos : f.find(')', open);
+        std::string label = close == std::string::npos ? f : f.substr(open + 3, close - open - 3);
+        const std::size_t alternative = label.find(" or ");
+        const bool either = close != std::string::npos && alternative != std::string::npos;
+        if (either) label.replace(alternative, 4, ", ");  // "TODO 4b or 6": the numbers 4 and 6
+        const std::set<int> todos = cp::todo_numbers(label);
+        if (!todos.empty()) return either ? *todos.rbegin() : *todos.begin();
     }
-    return lowest;
+    return 1000;
 }
 
 }  // namespace
@@ -284,18 +293,18 @@ int main(int argc, char** argv) {
     int passed = 0, failed = 0, crashed = 0;
 
     // The first to fix: in the first milestone with a failure, the failing checkpoint whose
-    // findings name the lowest TODO (the lesson's order of work: the skeleton's m2.edge_and_box,
-    // which says what snap() returns, before m2.solid, which says that nothing is drawn); at a
-    // tie, or without a TODO named, the first in the lesson's order.
+    // findings send the student to the lowest TODO (the lesson's order of work: the skeleton's
+    // m2.edge_and_box, which says what snap() returns, before m2.solid, which says that nothing
+    // is drawn); at a tie, or without a TODO named, the first in the lesson's order.
     const cp::Record* first = nullptr;
-    int first_todo = 0;
+    int lowest = 0;
     for (const cp::Record& r : records) {
         if (r.status == "pass") continue;
         if (first != nullptr && r.milestone != first->milestone) break;
-        const int todo = lowest_todo(r.findings);
-        if (first == nullptr || todo < first_todo) {
+        const int todo = first_todo(r.findings);
+        if (first == nullptr || todo < lowest) {
             first = &r;
-            first_todo = todo;
+            lowest = todo;
         }
     }
     if (first != nullptr) {

@@ -488,15 +488,14 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
                 plain ? "A pixel is drawn only when its center is inside all three edges; check the signs and which "
                         "edge function belongs to which pair of vertices." : ""};
     const bool only_aa = !s.tris.empty() && std::all_of(s.tris.begin(), s.tris.end(), [](const Tri& t) { return t.aa > 0; });
-    if (only_aa && plain) {
-        // Only fill_triangle_aa draws here: a pixel none of whose samples is inside was lit by
-        // samples placed elsewhere.
-        const std::string rest = " n * n sample positions is inside any triangle: the samples are not where the rule "
-                                 "puts them (or coverage is counted outside the triangle)";
-        extra = Tally{"supersampling", "are drawn, though none of their" + rest, "is drawn, though none of its" + rest, "TODO 6",
-                      "Sample (i, j) of pixel (x, y) is at (x + (i + 0.5) / n, y + (j + 0.5) / n): 16 * x + (2 * i + 1) * "
-                      "8 / n in sixteenths, never at the pixel's corner."};
-    }
+    // A pixel none of whose samples is inside, lit where only fill_triangle_aa draws (the whole
+    // scene, or the neighbourhood of anti-aliased triangles alone): samples placed elsewhere lit it.
+    const std::string sample_rest = " n * n sample positions is inside any triangle: the samples are not where the "
+                                    "rule puts them (or coverage is counted outside the triangle)";
+    Tally aa_extra{"supersampling", "are drawn, though none of their" + sample_rest,
+                   "is drawn, though none of its" + sample_rest, "TODO 6",
+                   "Sample (i, j) of pixel (x, y) is at (x + (i + 0.5) / n, y + (j + 0.5) / n): 16 * x + (2 * i + 1) * "
+                   "8 / n in sixteenths, never at the pixel's corner."};
     const std::string rule_rest = " decided wrongly (top and left edges include such centers, bottom and right edges "
                                   "exclude them)";
     Tally rule{"fill rule", "have their center exactly on an edge and are" + rule_rest,
@@ -558,6 +557,30 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
         Box& b = boxes[k];
         b.any = shapes[k].snapped_box(s.width, s.height, b.x0, b.y0, b.x1, b.y1);
     }
+    // Whether pixel (x, y) lies near triangles of one kind only (anti-aliased or not): in the
+    // box of one of them grown by a pixel (samples reach past the centers' box), and in no such
+    // box of the other kind.
+    auto near_only = [&](int x, int y, bool aa) {
+        bool near_kind = false;
+        for (std::size_t k = 0; k < shapes.size(); ++k) {
+            const Box& b = boxes[k];
+            if (!b.any || x < b.x0 - 1 || x > b.x1 || y < b.y0 - 1 || y > b.y1) continue;
+            if ((s.tris[k].aa > 0) != aa) return false;
+            near_kind = true;
+        }
+        return near_kind;
+    };
+    // Whether pixel (x, y) lies in the box (grown by a pixel) of an anti-aliased triangle whose
+    // sample count is not supported, and so must not be drawn.
+    auto near_unsupported_n = [&](int x, int y) {
+        for (std::size_t k = 0; k < shapes.size(); ++k) {
+            const int n = s.tris[k].aa;
+            const Box& b = boxes[k];
+            if (n <= 0 || n == 1 || n == 2 || n == 4 || n == 8 || !b.any) continue;
+            if (x >= b.x0 - 1 && x <= b.x1 && y >= b.y0 - 1 && y <= b.y1) return true;
+        }
+        return false;
+    };
     auto corner_picture = [&](int x, int y) {
         Color c = raster::colors::black;
         for (std::size_t k = 0; k < shapes.size(); ++k) {
@@ -599,7 +622,13 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
         "right and (b.x - a.x) * 16 downward, since the edge values are in (1/16 pixel)^2."}};
 
     bool has_aa = false, has_gradient = false;
-    for (Tally* t : {&missing, &missing_gradient, &extra, &rule, &last_row, &colors, &aa_wrong, &aa_unwritten, &aa_box,
+    // A pixel lit where only a call with an unsupported sample count n could have drawn it.
+    const std::string bad_n_rest = " where only a fill_triangle_aa call with an unsupported sample count (n other than "
+                                   "1, 2, 4 and 8) could have drawn, and such a call must draw nothing";
+    Tally bad_n{"bad input", "are drawn" + bad_n_rest, "is drawn" + bad_n_rest, "TODO 6",
+                "At the top of fill_triangle_aa: return unless n is 1, 2, 4 or 8 (their sample positions are points "
+                "of the 1/16 grid; other n are not)."};
+    for (Tally* t : {&missing, &missing_gradient, &extra, &aa_extra, &bad_n, &rule, &last_row, &colors, &aa_wrong, &aa_unwritten, &aa_box,
                      &aa_rule, &aa_set}) {
         t->wrong = &j.tolerance.wrong;
     }
@@ -656,8 +685,10 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
             if (ok) continue;
             if (e.on_edge && !near(e.alt_flip, e.want, 2) && near(got, e.alt_flip, gradient_top ? 2 : 0)) {
                 rule.add(x, y);
+            } else if (e.top < 0 && near_unsupported_n(x, y)) {
+                bad_n.add(x, y);
             } else if (e.top < 0) {
-                extra.add(x, y);
+                (plain && (only_aa || near_only(x, y, true)) ? aa_extra : extra).add(x, y);
             } else if (got == e.under) {
                 (e.in_last ? last_row : gradient_top ? missing_gradient : missing).add(x, y);
             } else if (gradient_top) {
@@ -715,7 +746,12 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
         lead->explained.report(j);
         rule.count = 0;
     }
-    for (const Tally* t : {&rule, &aa_rule, &last_row, &aa_box, &missing, &missing_gradient, &extra, &colors, &aa_unwritten, &aa_set, &aa_wrong}) {
+    // Where only fill_triangle_aa draws, a pixel lit though none of its samples is inside (none
+    // on an edge either: those are lenient) shows samples in the wrong place, whatever else is
+    // wrong: a fill-rule slip cannot light it. That finding leads; the edge-sample tally after
+    // it may be the same misplaced samples, landing on the edges by chance.
+    for (const Tally* t : {&bad_n, &aa_extra, &rule, &aa_rule, &last_row, &aa_box, &missing, &missing_gradient, &extra, &colors,
+                           &aa_unwritten, &aa_set, &aa_wrong}) {
         t->report(j);
     }
 }
@@ -930,14 +966,21 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
         if (sized && differ > 0 && colors_only == differ) {
             // Both orders fill the same pixels; only the gradient's colors move: the winding is
             // fixed (TODO 4a), but the colors did not follow their vertices (TODO 5).
-            j.findings.push_back(finding("winding",
-                                         "listing each triangle's vertices in the other order filled the same pixels "
-                                         "but changed the color of " + cp::plural(double(differ), "gradient pixel") +
-                                             " (see other_winding.png): when set_up swaps v1 and v2 to fix the winding, "
-                                             "fill_triangle_gradient must swap c1 and c2 too, so each color stays with "
-                                             "its vertex",
-                                         "TODO 5",
-                                         "set_up reports the swap (Setup::swapped); after it, swap c1 and c2 as well."));
+            // It leads when the main picture's errors are the clockwise triangles' (their colors
+            // are what moved): a barycentric finding about the same pixels would send the student
+            // to the weights, which are right for the other winding.
+            const bool clockwise_wrong = stats.cw_wrong > 0 && stats.cw_wrong * 10 >= stats.wrong * 9;
+            j.findings.insert(clockwise_wrong ? j.findings.begin() + std::ptrdiff_t(numbers_at) : j.findings.end(),
+                              finding("winding",
+                                      "listing each triangle's vertices in the other order filled the same pixels "
+                                      "but changed the color of " + cp::plural(double(differ), "gradient pixel") +
+                                          " (see other_winding.png): the colors did not follow their vertices. "
+                                          "set_up exchanges v[1] and v[2] of a clockwise triangle (Setup::swapped "
+                                          "says so); fill_triangle_gradient must then exchange the colors of the "
+                                          "same two vertices, c1 and c2, so each color stays with its vertex",
+                                      "TODO 5",
+                                      "set_up reports the swap (Setup::swapped: v[1] and v[2] exchanged); after it, "
+                                      "exchange c1 and c2, not any other pair."));
         } else if (differ > 0 || (!sized && art.values.count(cp::kRunawayKey) == 0)) {
             // (No other_winding image after a runaway loop: the render stopped before drawing
             // it, the runaway finding says so, and there is nothing to compare.)
