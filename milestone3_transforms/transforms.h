@@ -47,13 +47,14 @@
 //    a little, since a vertex may round to a neighbouring pixel. Nothing is timed.
 //
 //  * Bad input never crashes, hangs or returns NaN where this file says otherwise: see each
-//    function. The checkpoints give NaN-free but extreme input (far planes of 1e6, fields of
-//    view of 1 and 179 degrees, models 1e6 units away, vertices exactly in the camera's plane).
-//    Beyond that, what each function returns for NaN, infinities, coordinates near 1e308 and
-//    subnormals is said below (look_at, inverse, the projections, clipping), and draw_model
-//    drops any triangle or edge with a non-finite clip coordinate. The project fuzzes the
-//    reference with such input under AddressSanitizer and UndefinedBehaviorSanitizer; `make
-//    fuzz-m3 FUZZ_STUDENT=1` in your build folder does the same to your code (it needs clang).
+//    function. The picture checkpoints give NaN-free but extreme input (far planes of 1e6,
+//    fields of view of 1 and 179 degrees, models 1e6 units away, vertices exactly in the
+//    camera's plane). What each function returns for NaN, infinities, coordinates near 1e308
+//    and subnormals is said below (rotate, inverse, look_at, the projections, clipping), and
+//    the checkpoint m3.nonfinite tests those answers; draw_model drops any triangle or edge
+//    with a non-finite clip coordinate. The project also fuzzes the reference with such input
+//    under AddressSanitizer and UndefinedBehaviorSanitizer; `make fuzz-m3 FUZZ_STUDENT=1` in
+//    your build folder does the same to your code (it needs clang).
 #pragma once
 
 #include <array>
@@ -112,7 +113,7 @@ Mat4 rotate(Vec3 axis, double radians);
 // |entry|; a fixed threshold such as 1e-6 fails). A matrix with an entry that is NaN or
 // infinite returns false too, and so does one whose inverse would have an entry too large for a
 // double (a matrix of entries near 1e-320: check the result is finite before writing `out`;
-// the fuzzer, tools/fuzz.sh, checks this promise; no checkpoint does).
+// m3.nonfinite tests these three cases).
 bool inverse(const Mat4& a, Mat4& out);
 // TODO 3b: the inverse of a rigid transform (a rotation R and a translation t, last row
 // 0 0 0 1): R transposed, and -R^T t. No elimination, no test for singularity.

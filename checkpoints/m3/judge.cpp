@@ -208,6 +208,224 @@ Matrix transpose(const Matrix& a) {
     return t;
 }
 
+bool has_nan(const Matrix& m) {
+    for (const auto& row : m) {
+        for (double x : row) {
+            if (std::isnan(x)) return true;
+        }
+    }
+    return false;
+}
+
+bool is_zero(const Matrix& m) {
+    for (const auto& row : m) {
+        for (double x : row) {
+            if (x != 0) return false;
+        }
+    }
+    return true;
+}
+
+Matrix identity_matrix() {
+    Matrix m{};
+    for (int i = 0; i < 4; ++i) m[i][i] = 1;
+    return m;
+}
+
+// " (it holds NaN)", " (it holds infinity)" or nothing: said after a matrix a student returned.
+std::string nonfinite_note(const Matrix& m) {
+    bool inf = false;
+    for (const auto& row : m) {
+        for (double x : row) inf |= std::isinf(x);
+    }
+    return has_nan(m) ? " (it holds NaN)" : inf ? " (it holds infinity)" : "";
+}
+
+// m3.nonfinite: each input is extreme, and the answer is the one transforms.h pins for it
+// (where it pins several, any of them passes). Ordinary answers come from the reference.
+void judge_nonfinite(Ctx& c) {
+    const Values& v = c.mine;
+    // TODO 2b: a non-finite axis gives the identity.
+    const std::pair<const char*, const char*> rotations[] = {{"rot.nan", "rotate((nan, 0, 1), 0.7)"},
+                                                             {"rot.inf", "rotate((inf, 1, 0), 0.7)"}};
+    for (const auto& [key, call] : rotations) {
+        const Matrix a = mat(v, key);
+        if (same(a, identity_matrix())) continue;
+        c.add("rotation", std::string("TODO 2b: ") + call + " gave " + str(a) + nonfinite_note(a) +
+                              ", expected the identity: transforms.h pins that a non-finite axis, like the zero "
+                              "axis, gives the identity. A NaN is neither 0 nor anything else (every comparison with "
+                              "it is false), so a test such as len == 0 lets it through; test std::isfinite(len) too "
+                              "before dividing by the length");
+        c.j.findings.back().hint = "rotate: return the identity when the axis's length is zero or not finite "
+                                   "(std::isfinite), before dividing by it";
+    }
+    // TODO 3a: false, with `out` left alone, for a non-finite entry or a result too large.
+    static const std::map<std::string, std::string> inverses = {
+        {"inv.nan", "a matrix with a NaN entry (m[1][2])"},
+        {"inv.inf", "a perspective-like matrix with an infinite entry (m[2][2] = -inf)"},
+        {"inv.tiny", "[2e-320 1e-320 0 0; 1e-320 3e-320 0 1e-320; 0 0 1e-320 0; 0 1e-320 0 2e-320], whose inverse "
+                     "would have entries near 1e320, too large for a double"},
+    };
+    for (const auto& [key, what] : inverses) {
+        const double ok = get(v, key + ".ok");
+        const Matrix out = mat(v, key);
+        bool untouched = true;
+        for (const auto& row : out) {
+            for (double x : row) untouched &= x == -7;
+        }
+        if (ok != 0) {
+            c.add("inverse", "TODO 3a: inverse() returned true for " + what + ", with " + str(out) + nonfinite_note(out) +
+                                 ". transforms.h pins false here: a matrix with an entry that is NaN or infinite has "
+                                 "no inverse, and neither has one whose inverse would not be finite. Check the entries "
+                                 "with std::isfinite first, and check every entry of the result before writing `out`");
+            c.j.findings.back().hint = "inverse(): false for a non-finite entry, and false when an entry of the "
+                                       "result is not finite (test it before writing out)";
+        } else if (!untouched) {
+            c.add("inverse", "TODO 3a: inverse() returned false for " + what + ", as it must, but changed `out` to " +
+                                 str(out) + ": transforms.h pins that false leaves `out` alone (the caller may keep "
+                                 "the matrix it had). Work in a copy and write `out` only when you return true");
+        }
+    }
+    // TODO 4: look_at.
+    struct LookAt {
+        const char* key;
+        const char* call;
+        const char* rule;
+    };
+    static const LookAt look_ats[] = {
+        {"la.nan_eye", "look_at((nan, 1, 2), (0, 0, 0), (0, 1, 0))", "an eye that is not finite gives the zero matrix"},
+        {"la.inf_eye", "look_at((0, -inf, 0), (0, 0, 0), (0, 1, 0))", "an eye that is not finite gives the zero matrix"},
+        {"la.nan_target", "look_at((1, 2, 3), (nan, 0, 0), (0, 1, 0))",
+         "a target - eye that is not finite gives f = (0, 0, -1), and r and u follow from it as usual"},
+        {"la.inf_target", "look_at((1, 2, 3), (inf, 0, 0), (0.3, 1, 0))",
+         "a target - eye that is not finite gives f = (0, 0, -1) (not +x), and r and u follow from it as usual"},
+        {"la.huge", "look_at((0, 0, 0), (1e308, -1e308, 5e307), (0, 1, 0))",
+         "the length of target - eye overflows (its square is infinite), so scale the vector by a power of two "
+         "(std::ldexp by minus std::ilogb of its largest |component|) before normalizing: f still has length 1"},
+        {"la.tiny", "look_at((1e-310, 0, 0), (0, 3e-310, -2e-310), (0, 1, 0))",
+         "the square of target - eye underflows to 0 (its components are subnormal), so scale the vector by a "
+         "power of two before normalizing: f still has length 1 and points from eye to target"},
+        {"la.huge_up", "look_at((1, 2, 3), (0, 0, 0), (0, 1e308, 1e308))",
+         "up's length overflows: scale it by a power of two before normalizing, as for target - eye"},
+        {"la.tiny_up", "look_at((1, 2, 3), (0, 0, 0), (1e-170, 1e-170, 0))",
+         "the square of up's length underflows to 0 (1e-340), but up is not zero: scale it by a power of two "
+         "before normalizing, and it still gives the direction (1, 1, 0); the world-axis fallback is for an up "
+         "that is zero or parallel to f"},
+    };
+    static const char* kLookAtHint = "look_at: the zero matrix when eye is not finite; f = (0, 0, -1) when target - eye "
+                                     "is not finite; a vector too long or too short to normalize is first scaled by a "
+                                     "power of two (std::ldexp); never NaN";
+    for (const LookAt& l : look_ats) {
+        const Matrix a = mat(v, l.key), b = mat(c.ref, l.key);
+        if (same(a, b)) continue;
+        c.add("look at fallback", std::string("TODO 4: ") + l.call + " gave " + str(a) + nonfinite_note(a) + ", expected " +
+                                      str(b) + ": transforms.h pins that " + l.rule);
+        c.j.findings.back().hint = kLookAtHint;
+    }
+    {
+        // An eye beyond 1e308: the rows must be right; the last column may overflow to
+        // +/-infinity (transforms.h), so there an infinite entry passes, but never NaN.
+        const Matrix a = mat(v, "la.huge_eye"), b = mat(c.ref, "la.huge_eye");
+        bool ok = !has_nan(a);
+        for (int i = 0; i < 4 && ok; ++i) {
+            for (int j = 0; j < 4; ++j) {
+                ok &= close(a[i][j], b[i][j]) || (j == 3 && i < 3 && (std::isinf(a[i][j]) || std::isinf(b[i][j])) &&
+                                                  std::abs(a[i][j]) > 1e306 && std::abs(b[i][j]) > 1e306 &&
+                                                  (a[i][j] > 0) == (b[i][j] > 0));
+            }
+        }
+        if (!ok) {
+            c.add("look at fallback",
+                  "TODO 4: look_at((1.7e308, -1.2e308, 9e307), that eye + (-1e307, 5e306, -3e306), (0, 1, 0)) gave " + str(a) +
+                      nonfinite_note(a) + ", expected " + str(b) +
+                      " (in the last column, an infinity of the expected sign passes too): transforms.h pins that "
+                      "the rows r, u, -f are right and the last column may overflow to +/-infinity, but nothing is "
+                      "NaN. The direction target - eye is an ordinary 1e307-sized vector here; normalize it with the "
+                      "power-of-two scaling");
+            c.j.findings.back().hint = kLookAtHint;
+        }
+    }
+    {
+        const Matrix a = mat(v, "la.nan_up");
+        if (has_nan(a)) {
+            c.add("look at fallback", "TODO 4: look_at((1, 2, 3), (0, 0, 0), (0, nan, 1)) gave " + str(a) +
+                                          ": transforms.h pins that look_at never returns NaN (any finite answer "
+                                          "passes here). An up that is not finite cannot give r: use the fallback "
+                                          "world axis, as for a zero up");
+            c.j.findings.back().hint = kLookAtHint;
+        }
+    }
+    // TODO 5: the projections.
+    static const std::pair<const char*, const char*> zero[] = {
+        {"p.nan_fov", "perspective(nan, 1, 0.1, 10): an argument that is not finite"},
+        {"p.inf_far", "perspective(60, 1, 0.1, inf): an argument that is not finite"},
+        {"p.max_far", "perspective(60, 1, 1, DBL_MAX): 2 * far * near overflows to infinity"},
+        {"p.tiny_aspect", "perspective(60, 1e-320, 0.1, 10): f / aspect overflows to infinity"},
+        {"o.nan", "orthographic(nan, 1, -1, 1, 0.1, 10): an argument that is not finite"},
+        {"o.inf", "orthographic(-1, 1, -inf, 1, 0.1, 10): an argument that is not finite"},
+        {"o.tiny_range", "orthographic(-1, 1, -1, 1, 1e-309, 0): 2 / (far - near) overflows to infinity"},
+    };
+    for (const auto& [key, what] : zero) {
+        const Matrix a = mat(v, key);
+        if (is_zero(a)) continue;
+        c.add("projection", std::string("TODO 5: ") + what + "; it gave " + str(a) + nonfinite_note(a) +
+                                ", expected the zero matrix, which transforms.h pins for invalid arguments and for "
+                                "arguments that would put an infinite entry in the matrix. Check every argument with "
+                                "std::isfinite, and every entry you computed, before returning");
+        c.j.findings.back().hint = "projections: the zero matrix for an argument that is not finite, and for an entry "
+                                   "that overflows to infinity (check each entry with std::isfinite)";
+    }
+    static const std::pair<const char*, const char*> valid[] = {
+        {"p.huge_far", "perspective(60, 1.5, 0.1, 1e300)"},
+        {"p.subnormal_near", "perspective(60, 1.5, 5e-324, 1) (near is the smallest positive double, still valid)"},
+        {"o.huge", "orthographic(-1e300, 1e300, -1e300, 1e300, 1, 1e300)"},
+    };
+    for (const auto& [key, what] : valid) {
+        c.matrix(key, "projection", std::string("TODO 5: ") + what + ", valid arguments with a finite matrix");
+    }
+    // TODO 7: coordinates near 1e308: finite ends, the reference's points.
+    static const char* kHugeClipHint = "clipping near 1e308: when some |coordinate| exceeds 2^500, scale every vertex by "
+                                       "2^-ilogb(largest) with std::ldexp, clip, and scale the result back";
+    const auto cases = nonfinite_clip_cases();
+    const auto& tri = cases.first;
+    {
+        const auto a = polygon(v, "c.poly"), b = polygon(c.ref, "c.poly");
+        const bool finite = std::all_of(a.begin(), a.end(), [](Vec4 p) {
+            return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+        });
+        if (!finite || !same_polygon(a, b)) {
+            std::string pts, rpts;
+            for (const Vec4& p : a) pts += (pts.empty() ? "" : " ") + str(p);
+            for (const Vec4& p : b) rpts += (rpts.empty() ? "" : " ") + str(p);
+            c.add("clipping", "TODO 7a: clip_polygon of the triangle " + str(tri[0]) + " " + str(tri[1]) + " " + str(tri[2]) +
+                                  " gave " + std::to_string(a.size()) + " vertices (" + pts + "), expected " +
+                                  std::to_string(b.size()) + " (" + rpts + ")" +
+                                  (finite ? "" : ", and some of yours are not finite") +
+                                  ". A plane distance such as w + x overflows to infinity here, and a crossing "
+                                  "inf / inf is NaN. transforms.h pins the remedy: when some |coordinate| exceeds "
+                                  "2^500, scale every vertex by the same power of two (std::ldexp), clip, and scale "
+                                  "the result back: finite input gives finite output");
+            c.j.findings.back().hint = kHugeClipHint;
+        }
+    }
+    {
+        const auto& seg = cases.second;
+        const double ok = get(v, "c.line.ok"), rok = get(c.ref, "c.line.ok");
+        const Vec4 a = vec4(v, "c.line.a"), b = vec4(v, "c.line.b");
+        const Vec4 ra = vec4(c.ref, "c.line.a"), rb = vec4(c.ref, "c.line.b");
+        const double sc = scale_of({ra, rb});
+        if (ok != rok || (rok == 1 && !(same4(a, ra, sc) && same4(b, rb, sc)))) {
+            c.add("clipping", "TODO 7b: clip_line of " + str(seg[0]) + " - " + str(seg[1]) + " gave " +
+                                  (ok == 1 ? str(a) + " - " + str(b) : std::string("nothing")) + ", expected " +
+                                  (rok == 1 ? str(ra) + " - " + str(rb) : std::string("nothing")) +
+                                  ". w + x overflows to infinity at the right end; as in clip_polygon, scale both ends "
+                                  "by a power of two when some |coordinate| exceeds 2^500 (transforms.h): finite ends "
+                                  "give finite ends");
+            c.j.findings.back().hint = kHugeClipHint;
+        }
+    }
+}
+
 void judge_group(Group g, Ctx& c) {
     const Values& v = c.mine;
     switch (g) {
@@ -670,6 +888,7 @@ void judge_group(Group g, Ctx& c) {
             }
             break;
         }
+        case Group::kNonFinite: judge_nonfinite(c); break;
     }
 }
 

@@ -3,6 +3,7 @@
 #include "m3/render.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "m3/scenes.h"
@@ -184,6 +185,50 @@ void numbers(Group g, Values& v) {
             put(v, "r", r);
             break;
         }
+        case Group::kNonFinite: {
+            // The inputs are listed with their rules in judge.cpp (kNonFinite).
+            const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+            const double max = std::numeric_limits<double>::max();
+            put(v, "rot.nan", CALL("rotate", m3::rotate({nan, 0, 1}, 0.7)));
+            put(v, "rot.inf", CALL("rotate", m3::rotate({inf, 1, 0}, 0.7)));
+            for (const auto& c : nonfinite_inverse_cases()) {
+                // Filled with -7: inverse() that returns false must leave it alone.
+                Mat4 out = to_mat4({{{-7, -7, -7, -7}, {-7, -7, -7, -7}, {-7, -7, -7, -7}, {-7, -7, -7, -7}}});
+                const Mat4 a = to_mat4(c.second);
+                v[c.first + ".ok"] = CALL("inverse", m3::inverse(a, out));
+                put(v, c.first, out);
+            }
+            put(v, "la.nan_eye", CALL("look_at", m3::look_at({nan, 1, 2}, {0, 0, 0}, {0, 1, 0})));
+            put(v, "la.inf_eye", CALL("look_at", m3::look_at({0, -inf, 0}, {0, 0, 0}, {0, 1, 0})));
+            put(v, "la.nan_target", CALL("look_at", m3::look_at({1, 2, 3}, {nan, 0, 0}, {0, 1, 0})));
+            put(v, "la.inf_target", CALL("look_at", m3::look_at({1, 2, 3}, {inf, 0, 0}, {0.3, 1, 0})));
+            put(v, "la.huge", CALL("look_at", m3::look_at({0, 0, 0}, {1e308, -1e308, 5e307}, {0, 1, 0})));
+            put(v, "la.tiny", CALL("look_at", m3::look_at({1e-310, 0, 0}, {0, 3e-310, -2e-310}, {0, 1, 0})));
+            put(v, "la.huge_up", CALL("look_at", m3::look_at({1, 2, 3}, {0, 0, 0}, {0, 1e308, 1e308})));
+            put(v, "la.tiny_up", CALL("look_at", m3::look_at({1, 2, 3}, {0, 0, 0}, {1e-170, 1e-170, 0})));
+            const Vec3 far_eye{1.7e308, -1.2e308, 0.9e308};
+            put(v, "la.huge_eye", CALL("look_at", m3::look_at(far_eye, far_eye + Vec3{-1e307, 5e306, -3e306}, {0, 1, 0})));
+            put(v, "la.nan_up", CALL("look_at", m3::look_at({1, 2, 3}, {0, 0, 0}, {0, nan, 1})));
+            put(v, "p.nan_fov", CALL("perspective", m3::perspective(nan, 1, 0.1, 10)));
+            put(v, "p.inf_far", CALL("perspective", m3::perspective(60, 1, 0.1, inf)));
+            put(v, "p.max_far", CALL("perspective", m3::perspective(60, 1, 1, max)));
+            put(v, "p.tiny_aspect", CALL("perspective", m3::perspective(60, 1e-320, 0.1, 10)));
+            put(v, "p.huge_far", CALL("perspective", m3::perspective(60, 1.5, 0.1, 1e300)));
+            put(v, "p.subnormal_near", CALL("perspective", m3::perspective(60, 1.5, 5e-324, 1)));
+            put(v, "o.nan", CALL("orthographic", m3::orthographic(nan, 1, -1, 1, 0.1, 10)));
+            put(v, "o.inf", CALL("orthographic", m3::orthographic(-1, 1, -inf, 1, 0.1, 10)));
+            put(v, "o.tiny_range", CALL("orthographic", m3::orthographic(-1, 1, -1, 1, 1e-309, 0)));
+            put(v, "o.huge", CALL("orthographic", m3::orthographic(-1e300, 1e300, -1e300, 1e300, 1, 1e300)));
+            const auto cases = nonfinite_clip_cases();
+            const std::array<Vec4, 3>& tri = cases.first;
+            const std::array<Vec4, 2>& seg = cases.second;
+            put_polygon(v, "c.poly", CALL("clip_polygon", m3::clip_polygon({tri[0], tri[1], tri[2]})));
+            Vec4 a = seg[0], b = seg[1];
+            v["c.line.ok"] = CALL("clip_line", m3::clip_line(a, b));
+            put(v, "c.line.a", a);
+            put(v, "c.line.b", b);
+            break;
+        }
     }
 }
 
@@ -284,6 +329,15 @@ void probes(Group g, Values& v) {
         case Group::kNearSingular:
         case Group::kClip:
             break;  // their public inputs already vary (scenes.cpp)
+        case Group::kNonFinite: {
+            // The fallbacks at other finite arguments: a look_at whose target is not finite, a
+            // rotation about an axis with an infinite component.
+            const Vec3 eye = vec(-6, 6);
+            const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+            put(v, "probe.look_at.nan_target", CALL("look_at", m3::look_at(eye, {r(-3, 3), nan, r(-3, 3)}, {r(-1, 1) / 4, 1, r(-1, 1) / 4})));
+            put(v, "probe.rotation.inf_axis", CALL("rotate", m3::rotate({r(-3, 3), r(-3, 3), -inf}, r(-3, 3))));
+            break;
+        }
     }
 }
 

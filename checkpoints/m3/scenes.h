@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "raster/color.h"
@@ -53,7 +54,7 @@ struct Panel {
 // the results (hand-worked values, or the reference where hand-working is impractical).
 enum class Group {
     kMatrixOps, kBuilders, kRodrigues, kComposition, kInverse, kNearSingular, kLookAt, kProjection,
-    kClip, kCulling, kBezier, kPainter, kRotationDrift,
+    kClip, kCulling, kBezier, kPainter, kRotationDrift, kNonFinite,
 };
 
 struct Scene {
@@ -99,5 +100,10 @@ Mesh obj_mesh(const std::string& name, bool colored);  // a model shipped in com
 Matrix near_singular_matrix();
 std::vector<std::array<Vec4, 3>> clip_cases();       // triangles in clip space
 std::vector<std::array<Vec4, 2>> clip_line_cases();  // segments in clip space
+// m3.nonfinite: matrices inverse() must refuse (a NaN entry, an infinite one, entries near
+// 1e-320 whose inverse overflows), by value name; a triangle and a segment with coordinates
+// near 1e308 (a plane distance such as w + x overflows), crossing the side planes.
+std::vector<std::pair<std::string, Matrix>> nonfinite_inverse_cases();
+std::pair<std::array<Vec4, 3>, std::array<Vec4, 2>> nonfinite_clip_cases();
 
 }  // namespace m3cp
