@@ -381,6 +381,13 @@ void judge_nonfinite(Ctx& c) {
         {"o.huge", "orthographic(-1e300, 1e300, -1e300, 1e300, 1, 1e300)"},
     };
     for (const auto& [key, what] : valid) {
+        const Matrix a = mat(v, key);
+        // Both perspectives have fovy = 60: 60 "degrees" taken as radians gives f = 1 / tan(30).
+        if (key[0] == 'p' && !same(a, mat(c.ref, key)) && close(a[1][1], 1 / std::tan(30.0))) {
+            c.add("degrees", std::string("TODO 5: ") + what + " has f = " + num(a[1][1]) +
+                                 ", which is 1 / tan(30 radians). fovy is in DEGREES: convert with * pi / 180");
+            continue;
+        }
         c.matrix(key, "projection", std::string("TODO 5: ") + what + ", valid arguments with a finite matrix");
     }
     // TODO 7: coordinates near 1e308: finite ends, the reference's points.
