@@ -229,22 +229,25 @@ std::string report_block(const std::filesystem::path& log_path, const std::strin
     return block;
 }
 
-// The TODO to fix first by these findings: the lowest one the first finding that names any
-// sends the student to ("[snap] (TODO 1) ...", "(TODOs 2, 4)", "fix TODO 3 first"); the first
-// finding is the judge's likeliest cause, later ones may be its consequences. A finding that
-// names alternatives ("(TODO 4b or 6)") counts as its last: it does not know the earlier one is
-// wrong. A large number when no finding names a TODO.
+// The TODO to fix first by these findings: the one the first finding that names any sends the
+// student to ("[snap] (TODO 1) ...", "fix TODO 3 first"); the first finding is the judge's
+// likeliest cause, later ones may be its consequences. A finding that names several ("(TODOs 2,
+// 4)", "(TODO 4b or 6)", "(TODOs 3-4)") counts as the last of them: it does not know that the
+// earlier ones are wrong, so a checkpoint that does know comes first. A large number when no
+// finding names a TODO.
 int first_todo(const std::vector<std::string>& findings) {
     for (const std::string& f : findings) {
-        // The label in parentheses after the topic, when there is one; else the whole line.
-        const std::size_t open = f.find("] (");
-        const std::size_t close = open == std::string::npos ? std::string::npos : f.find(')', open);
-        std::string label = close == std::string::npos ? f : f.substr(open + 3, close - open - 3);
-        const std::size_t alternative = label.find(" or ");
-        const bool either = close != std::string::npos && alternative != std::string::npos;
-        if (either) label.replace(alternative, 4, ", ");  // "TODO 4b or 6": the numbers 4 and 6
+        // The first TODO label of the line: "[topic] (TODOs 2, 4) ...", "[nothing drawn]
+        // `draw_line` (TODOs 3-4) drew nothing ...", "fix TODO 3 first (see ...)".
+        const std::size_t at = f.find("TODO");
+        if (at == std::string::npos) continue;
+        std::string label = f.substr(at, f.find_first_of("):;", at) - at);
+        if (const std::size_t first = label.find(" first"); first != std::string::npos) label.resize(first);
+        if (const std::size_t alternative = label.find(" or "); alternative != std::string::npos) {
+            label.replace(alternative, 4, ", ");
+        }
         const std::set<int> todos = cp::todo_numbers(label);
-        if (!todos.empty()) return either ? *todos.rbegin() : *todos.begin();
+        if (!todos.empty()) return *todos.rbegin();
     }
     return 1000;
 }
@@ -412,8 +415,9 @@ int main(int argc, char** argv) {
         return 1;
     }
     if (failed + crashed > 0 || ctest_status != 0) {
-        std::cout << "\n" << failed + crashed << (failed + crashed == 1 ? " checkpoint" : " checkpoints")
-                  << " to fix: start with the first one above.\n";
+        std::cout << "\n" << failed + crashed << (failed + crashed == 1 ? " checkpoint" : " checkpoints") << " to fix";
+        if (first != nullptr) std::cout << ": start with " << first->id << ", the one shown in full above";
+        std::cout << ".\n";
         return 1;
     }
     std::cout << "\nAll checkpoints pass.\n";

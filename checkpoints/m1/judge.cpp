@@ -369,7 +369,7 @@ struct Checker {
         std::string plain_todo, precision_todo, precision_hint;
     };
     std::vector<FarFailure> far_failures;
-    std::size_t strays_at = 0;  // where the off-the-line finding is (or would be)
+    std::size_t strays_at = 0;  // where the lines' findings start (a far line's precision goes first)
     // Wu findings about a pixel that an aliased line may have overdrawn (see check_lines).
     std::vector<cp::Finding> overdrawn_wu = {};
     std::vector<std::size_t> clip_wrong = {};  // clip scenes: segments clip_line got wrong
@@ -411,12 +411,6 @@ struct Checker {
             }
         }
         strays_at = j.findings.size();
-        if (strays > 0) {
-            add("off the line",
-                cp::plural(double(strays), "pixel") + (strays == 1 ? " is" : " are") + " drawn where no line passes within half a "
-                "pixel of their center, e.g. " + first,
-                "", clip_values_right ? kDrawingNotClippingHint : "");
-        }
         for (const Plan& plan : plans) {
             if (plan.aa_zero_length_center && !plan.aa_zero_length.empty()) {
                 zero_length_center_drawn |= lit(img, plan.aa_zero_length.front());
@@ -441,12 +435,20 @@ struct Checker {
         const bool others_fine = j.findings.size() == before;
         for (const auto& f : far_failures) {
             if (others_fine) {
-                // First, before the off-the-line pixels the misplaced line also makes.
+                // First, before the findings of the other lines it crosses.
                 j.findings.insert(j.findings.begin() + std::ptrdiff_t(strays_at++),
                                   {"precision", f.precision, f.precision_hint, f.precision_todo});
             } else {
                 add(f.topic, f.plain, f.plain_todo);
             }
+        }
+        // Pixels off every line come after the lines' own findings, which say which line went
+        // astray and why (the mirrored steps, the shifted grid); alone, they lead.
+        if (strays > 0) {
+            add("off the line",
+                cp::plural(double(strays), "pixel") + (strays == 1 ? " is" : " are") + " drawn where no line passes within half a "
+                "pixel of their center, e.g. " + first,
+                "", clip_values_right ? kDrawingNotClippingHint : "");
         }
     }
 
@@ -495,15 +497,14 @@ struct Checker {
                 "TODOs 3-4", kEndpointHint);
             return;
         }
-        if (missing.size() >= 2 && plan.exact) {
-            // The whole line one pixel right, down, or both: the endpoints' pixels were found
-            // with round() (or a cast after adding 0.5), not floor().
+        const auto in_color = [&](Pix p) { return p.x < img.width() && p.y < img.height() && img.at(p.x, p.y) == plan.color; };
+        if (missing.size() >= 2 && plan.exact && !in_color(plan.p0) && !in_color(plan.p1)) {
+            // The whole line one pixel right, down, or both, its two end pixels included: the
+            // endpoints' pixels were found with round() (or a cast after adding 0.5), not
+            // floor(). (A line that starts right and drifts off a row is the loop's error term.)
             for (const Pix d : {Pix{1, 1}, Pix{1, 0}, Pix{0, 1}}) {
                 std::size_t shifted = 0;
-                for (Pix p : plan.required) {
-                    const Pix q{p.x + d.x, p.y + d.y};
-                    shifted += q.x < img.width() && q.y < img.height() && img.at(q.x, q.y) == plan.color;
-                }
+                for (Pix p : plan.required) shifted += in_color({p.x + d.x, p.y + d.y});
                 if (10 * shifted < 9 * plan.required.size()) continue;
                 const std::string where = d.x && d.y ? "right and down" : d.x ? "to the right" : "down";
                 add("pixel grid", plan.name + ": " + std::to_string(missing.size()) + " of its " +

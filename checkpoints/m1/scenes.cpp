@@ -294,10 +294,15 @@ std::vector<Scene> make_scenes() {
         s.hint = "Where a line leaves the image, one or both of a column's two pixels are outside "
                  "it: test the row (0 <= row < height; for steep lines the x) before each blend, "
                  "and convert it to int only after that test.";
+        // Wider than tall: a steep line's rows end at the height and its columns at the width,
+        // so limits taken from the wrong side of the image show (a square image hides them).
+        s.width = 80;
+        s.height = 56;
         s.lines = {aa_line({30.3, 12.6}, {75.5, -9.4}),             // out through the top
-                   aa_line({-10.5, 50.3}, {40.5, 73.9}, yellow),    // out through the bottom
+                   aa_line({-10.5, 40.3}, {40.5, 63.9}, yellow),    // out through the bottom
                    aa_line({12.3, 20.5}, {-9.4, 75.5}, cyan),       // steep, out through the left
-                   aa_line({55.7, -8.5}, {70.2, 30.5}, magenta),    // steep, out through the right
+                   aa_line({65.7, -8.5}, {88.2, 40.5}, magenta),    // steep, out through the top and right
+                   aa_line({66.4, 20.3}, {74.9, 70.5}, white),      // steep, beyond x = 56, out through the bottom
                    aa_line({8.5, 40.2}, {40.5, 28.7}, green)};      // inside, so doing nothing fails
         all.push_back(s);
     }
