@@ -493,7 +493,21 @@ struct Checker {
             only_endpoints &= (p.x == plan.p0.x && p.y == plan.p0.y) || (p.x == plan.p1.x && p.y == plan.p1.y);
         }
         if (!missing.empty() && only_endpoints) {
-            add("endpoint", plan.name + ": endpoint pixel " + str(missing.front()) + " is not drawn; both endpoints belong to the line",
+            const Pix e = missing.front();
+            // In the image's last column or row, the clip rectangle ending short of width - 0.5
+            // (height - 0.5) loses it as well as a loop that stops a pixel early does.
+            const char* edge = e.x == img.width() - 1 ? "last column" : e.y == img.height() - 1 ? "last row" : nullptr;
+            if (edge != nullptr) {
+                add("endpoint",
+                    plan.name + ": endpoint pixel " + str(e) + ", in the image's " + edge + ", is not drawn. Either "
+                    "the loop stops a pixel early (then every line misses its last pixel, and the octant "
+                    "checkpoints show it), or draw_line's clip rectangle ends a pixel short: the rectangle of "
+                    "pixel centers goes to width - 0.5 and height - 0.5",
+                    "TODOs 3-4", "Clip to {0.5, 0.5, width - 0.5, height - 0.5}, border included, and plot every pixel "
+                                 "from a to b, both ends included.");
+                return;
+            }
+            add("endpoint", plan.name + ": endpoint pixel " + str(e) + " is not drawn; both endpoints belong to the line",
                 "TODOs 3-4", kEndpointHint);
             return;
         }
@@ -526,6 +540,27 @@ struct Checker {
                                  " here) steps the wrong way",
                 "TODO 3",
                 kStepSignHint);
+            return;
+        }
+        // A line along the image's first or last row or column, (nearly) all missing: no loop
+        // bug loses such a line whole while drawing the others, so draw_line dropped it before
+        // the loop, in the snapping or the clipping to the rectangle of pixel centers, whose
+        // border is inside.
+        const bool on_border_row = plan.p0.y == plan.p1.y && (plan.p0.y == 0 || plan.p0.y == img.height() - 1);
+        const bool on_border_column = plan.p0.x == plan.p1.x && (plan.p0.x == 0 || plan.p0.x == img.width() - 1);
+        if (plan.exact && (on_border_row || on_border_column) && plan.required.size() >= 4 &&
+            missing.size() + 1 >= plan.required.size()) {
+            add("clipping",
+                plan.name + " lies along the image's " +
+                    (on_border_row ? (plan.p0.y == 0 ? "first row" : "last row")
+                                   : (plan.p0.x == 0 ? "first column" : "last column")) +
+                    ", and " + (missing.size() == plan.required.size() ? "none" : "almost none") +
+                    " of it is drawn: draw_line dropped it before its loop. Snap each endpoint to its pixel's "
+                    "center (floor(x) + 0.5, floor(y) + 0.5) before clipping, and clip to the rectangle of pixel "
+                    "centers, 0.5 to width - 0.5 and 0.5 to height - 0.5, border included",
+                "TODO 4",
+                "A line on the border of the rectangle of pixel centers is inside it: after snapping, its endpoints "
+                "lie exactly on that border, and clip_line must keep them.");
             return;
         }
         if (!missing.empty() && missing.size() == plan.required.size()) {
