@@ -376,11 +376,10 @@ struct Checker {
     // Clip scenes: clip_line returned the right points for every segment, so a line that
     // leaves its band was drawn wrong, not clipped wrong.
     bool clip_values_right = false;
-    // The code under test's outcode() puts a point on a rectangle's border outside (see
-    // border_probes): clipping goes wrong wherever a line touches that border, so a gap is
-    // not the drawing loop's.
-    bool outcode_border_wrong = false;
-    std::optional<cp::Finding> border_finding = std::nullopt;  // says so; kept if something shows it
+    // Set when the code under test's outcode() puts a point on a rectangle's border outside
+    // (see border_probes): clipping goes wrong wherever a line touches that border, so a gap
+    // is not the drawing loop's. The finding is kept only if something shows it.
+    std::optional<cp::Finding> border_finding = std::nullopt;
     // draw_line wrote outside the image (its trace says so): a missing line whose mirror
     // image falls outside the picture has walked out of it (see mirrored()).
     bool draw_line_wrote_outside = false;
@@ -604,7 +603,7 @@ struct Checker {
                     << " where it crosses the image have a pixel of it (a gap near " << str(*gap) << "). "
                     << (plan.far_both ? kFarBothClipLesson : kFarOneClipLesson);
                 far_failures.push_back({"clipping", message, why.str(), "TODOs 2, 4", "TODO 2", kFarClipHint});
-            } else if (clip_values_right && !outcode_border_wrong) {
+            } else if (clip_values_right && !border_finding) {
                 add("octant", plan.name + ": the line has a gap near " + str(*gap) + ", though clip_line returned the "
                               "right points for every line of this scene: the drawing loop leaves the line",
                     "TODO 3", kDrawingNotClippingHint);
@@ -808,12 +807,11 @@ struct Checker {
     // when the scene shows nothing wrong: its lines may never touch that border).
     void check_border_outcodes(const cp::Artifacts& art, const std::string& prefix, const Box& box,
                                const std::string& why) {
-        if (outcode_border_wrong) return;  // one such finding is enough
+        if (border_finding) return;  // one such finding is enough
         const std::vector<Vec2> probes = border_probes(box);
         for (std::size_t k = 0; k < probes.size(); ++k) {
             const auto it = art.values.find(prefix + std::to_string(k));
             if (it == art.values.end() || it->second == 0) continue;
-            outcode_border_wrong = true;
             std::ostringstream rect;
             rect << "{" << box.xmin << ", " << box.ymin << ", " << box.xmax << ", " << box.ymax << "}";
             const cp::Finding f{"outcode",

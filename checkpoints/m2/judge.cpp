@@ -551,6 +551,8 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
     struct Box {
         bool any = false;
         int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+        // Pixel (x, y) is in the box grown by a pixel (samples reach past the centers' box).
+        bool near(int x, int y) const { return any && x >= x0 - 1 && x <= x1 && y >= y0 - 1 && y <= y1; }
     };
     std::vector<Box> boxes(shapes.size());
     for (std::size_t k = 0; k < shapes.size(); ++k) {
@@ -563,8 +565,7 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
     auto near_only = [&](int x, int y, bool aa) {
         bool near_kind = false;
         for (std::size_t k = 0; k < shapes.size(); ++k) {
-            const Box& b = boxes[k];
-            if (!b.any || x < b.x0 - 1 || x > b.x1 || y < b.y0 - 1 || y > b.y1) continue;
+            if (!boxes[k].near(x, y)) continue;
             if ((s.tris[k].aa > 0) != aa) return false;
             near_kind = true;
         }
@@ -575,9 +576,7 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
     auto near_unsupported_n = [&](int x, int y) {
         for (std::size_t k = 0; k < shapes.size(); ++k) {
             const int n = s.tris[k].aa;
-            const Box& b = boxes[k];
-            if (n <= 0 || n == 1 || n == 2 || n == 4 || n == 8 || !b.any) continue;
-            if (x >= b.x0 - 1 && x <= b.x1 && y >= b.y0 - 1 && y <= b.y1) return true;
+            if (n > 0 && n != 1 && n != 2 && n != 4 && n != 8 && boxes[k].near(x, y)) return true;
         }
         return false;
     };
