@@ -115,6 +115,10 @@ struct Plan {
     // Band lines: endpoint pixels that every correct draw_line draws all the same (an endpoint
     // inside the image that no clipping moved: draw_line snaps it to its own pixel).
     std::vector<Pix> pinned_ends;
+    // The endpoints as the scene gives them (before draw_line snaps them), and whether
+    // snapping moves either (see lost_unsnapped and wu_mistake).
+    Vec2 raw_a{}, raw_b{};
+    bool snapping_moves = false;
 };
 
 constexpr double kFar = 1e15;
@@ -175,6 +179,20 @@ void plan_unjudged(Plan& plan, int w, int h) {
 Vec2 snapped_center(Vec2 p) { return {std::floor(p.x) + 0.5, std::floor(p.y) + 0.5}; }
 
 bool inside(const Vec2& p, int w, int h) { return p.x >= 0 && p.y >= 0 && p.x < w && p.y < h; }
+
+// Whether the segment a-b meets the closed box [x0, x1] x [y0, y1] (Liang-Barsky).
+bool meets(Vec2 a, Vec2 b, double x0, double y0, double x1, double y1) {
+    double t0 = 0, t1 = 1;
+    const Vec2 d = b - a;
+    const auto edge = [&](double p, double q) {  // keep t with p t <= q
+        if (p == 0) return q >= 0;
+        const double t = q / p;
+        if (p < 0) t0 = std::max(t0, t);
+        else t1 = std::min(t1, t);
+        return t0 <= t1;
+    };
+    return edge(-d.x, a.x - x0) && edge(d.x, x1 - a.x) && edge(-d.y, a.y - y0) && edge(d.y, y1 - a.y);
+}
 
 // Bresenham's pixels, derived exactly: at step i the ideal minor coordinate is
 // minor0 + dminor * i / n; the nearest pixel is unique unless the remainder is exactly n / 2.
@@ -326,11 +344,14 @@ Plan make_plan(const Segment& s, int w, int h, bool force_band) {
             return plan;
         }
     }
+    const Vec2 c0 = snapped_center(s.a), c1 = snapped_center(s.b);
+    plan.raw_a = s.a;
+    plan.raw_b = s.b;
+    plan.snapping_moves = !(c0 == s.a) || !(c1 == s.b);
     if (s.aa) {
         plan_aa(plan, s.a, s.b, w, h);
         return plan;
     }
-    const Vec2 c0 = snapped_center(s.a), c1 = snapped_center(s.b);
     if (!force_band && inside(c0, w, h) && inside(c1, w, h)) {
         const Pix p0{int(c0.x), int(c0.y)}, p1{int(c1.x), int(c1.y)};
         plan.name = "line from pixel " + str(p0) + " to " + str(p1) + " (" +
@@ -340,6 +361,32 @@ Plan make_plan(const Segment& s, int w, int h, bool force_band) {
         plan_band(plan, c0, c1, w, h);
     }
     return plan;
+}
+
+// Wu's coverage of pixel p as a plausible mistake computes it, for the line a-b (not far):
+// with the rows taken by a cast or std::trunc instead of std::floor (so the row above the
+// image's first one is 0 and its weight 1 - f passes 1), with pixel centers at whole numbers
+// (the textbook's convention), or between the endpoints' pixel centers (snapped as draw_line
+// does, which lines.h says Wu must not). kCorrect is lines.h's rule, as plan_aa computes it.
+enum class WuModel { kCorrect, kTrunc, kIntegerCenters, kSnapped };
+
+double wu_model_coverage(WuModel model, Vec2 a, Vec2 b, Pix p) {
+    if (model == WuModel::kSnapped) {
+        a = snapped_center(a);
+        b = snapped_center(b);
+    }
+    const bool steep = std::abs(b.y - a.y) > std::abs(b.x - a.x);
+    if (steep) {
+        std::swap(a.x, a.y);
+        std::swap(b.x, b.y);
+    }
+    const double gradient = b.x != a.x ? (b.y - a.y) / (b.x - a.x) : 0.0;
+    const double c = steep ? p.y : p.x, r = steep ? p.x : p.y;
+    const double half = model == WuModel::kIntegerCenters ? 0.0 : 0.5;
+    const double t = a.y + gradient * (c + half - a.x) - half;  // between rows `row` and `row + 1`
+    const double row = model == WuModel::kTrunc ? std::trunc(t) : std::floor(t), f = t - row;
+    const double weight = r == row ? 1.0 - f : r == row + 1 ? f : 0.0;
+    return std::clamp(weight, 0.0, 1.0);
 }
 
 bool lit(const Image& img, Pix p) { return img.at(p.x, p.y) != raster::colors::black; }
@@ -385,6 +432,7 @@ struct Checker {
     bool draw_line_wrote_outside = false;
 
     int& claim(Pix p) { return claims[std::size_t(p.y) * img.width() + p.x]; }
+    int claim(Pix p) const { return claims[std::size_t(p.y) * img.width() + p.x]; }
 
     void check_lines(const std::vector<Plan>& plans) {
         Mask allowed(img.width(), img.height());
@@ -481,6 +529,46 @@ struct Checker {
         return false;
     }
 
+    // Whether the segment as the scene gives it, unsnapped, runs through the box [x0, x1] x
+    // [y0, y1] only in the half pixel between the image's edge and the rectangle of pixel
+    // centers: a draw_line that clips the endpoints before snapping them cuts that part away,
+    // though its pixels are in the image. No correct draw_line loses such a pixel.
+    bool lost_unsnapped(const Plan& plan, double x0, double y0, double x1, double y1) const {
+        if (!plan.snapping_moves || plan.far || plan.aa) return false;
+        const double w = img.width(), h = img.height();
+        return meets(plan.raw_a, plan.raw_b, x0, y0, x1, y1) &&
+               !meets(plan.raw_a, plan.raw_b, std::max(x0, 0.5), std::max(y0, 0.5), std::min(x1, w - 0.5),
+                      std::min(y1, h - 0.5));
+    }
+    bool lost_unsnapped(const Plan& plan, const std::vector<Pix>& pixels) const {
+        if (pixels.empty()) return false;
+        Pix lo = pixels.front(), hi = pixels.front();
+        for (Pix p : pixels) {
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+        }
+        return lost_unsnapped(plan, lo.x, lo.y, hi.x + 1.0, hi.y + 1.0);
+    }
+    // Every pixel in `missing` (one box each) is one that clipping the unsnapped endpoints
+    // loses: say so, with TODO 4's order of steps, instead of a loop or clipping finding.
+    bool unsnapped_finding(const Plan& plan, const std::vector<std::vector<Pix>>& missing) {
+        if (missing.empty()) return false;
+        for (const auto& box : missing) {
+            if (!lost_unsnapped(plan, box)) return false;
+        }
+        const Pix p = missing.front()[missing.front().size() / 2];
+        judged_wrong(missing.front());
+        add("pixel grid",
+            plan.name + ": pixel " + str(p) + " is missing, and the line runs through it only in the half pixel "
+                "between the image's edge and the rectangle of pixel centers (0.5 to width - 0.5, 0.5 to "
+                "height - 0.5): draw_line clipped the endpoints as given. Snapped first, the endpoints are pixel "
+                "centers, and the line is cut only where its pixels leave the image",
+            "TODO 4",
+            "draw_line's order is: reject non-finite, snap each endpoint to (floor(x) + 0.5, floor(y) + 0.5), "
+            "order, clip to the rectangle of pixel centers, then convert and call bresenham.");
+        return true;
+    }
+
     void check_plan(const Plan& plan) {
         // Missing pixels. Only endpoints missing: the loop bounds. More than that: the line
         // runs in the wrong direction or on the wrong axis for its octant.
@@ -492,6 +580,9 @@ struct Checker {
             only_endpoints &= (p.x == plan.p0.x && p.y == plan.p0.y) || (p.x == plan.p1.x && p.y == plan.p1.y);
         }
         if (!missing.empty() && only_endpoints) {
+            std::vector<std::vector<Pix>> boxes;
+            for (Pix p : missing) boxes.push_back({p});
+            if (unsnapped_finding(plan, boxes)) return;
             const Pix e = missing.front();
             // In the image's last column or row, the clip rectangle ending short of width - 0.5
             // (height - 0.5) loses it as well as a loop that stops a pixel early does.
@@ -594,6 +685,11 @@ struct Checker {
             }
         }
         if (gap) {
+            std::vector<std::vector<Pix>> empty_bands;
+            for (const auto& band : plan.band_columns) {
+                if (std::none_of(band.begin(), band.end(), [&](Pix p) { return lit(img, p); })) empty_bands.push_back(band);
+            }
+            if (unsnapped_finding(plan, empty_bands)) return;
             const std::string message = plan.name + ": the visible part has a gap near " + str(*gap) +
                                         "; after clipping, every column (or row) the line crosses needs a pixel";
             if (plan.far) {
@@ -670,12 +766,89 @@ struct Checker {
         }
     }
 
+    // A wrong anti-aliased line whose interior pixels (all but at most one in 30 of those no
+    // other line touches) match a mistake model instead of the rule: the finding that names it.
+    std::optional<cp::Finding> wu_mistake(const Plan& plan) const {
+        if (plan.far) return std::nullopt;
+        // Whether the model explains the line, and the first pixel it explains that the rule
+        // does not.
+        const auto explains = [&](WuModel model) -> std::optional<Plan::Aa> {
+            std::size_t judged = 0, matched = 0;
+            std::optional<Plan::Aa> first;
+            for (const Plan::Aa& e : plan.aa_expected) {
+                if (claim(e.p) > 1) continue;
+                ++judged;
+                const Color got = img.at(e.p.x, e.p.y);
+                const Color modelled =
+                    raster::mix(raster::colors::black, plan.color, wu_model_coverage(model, plan.raw_a, plan.raw_b, e.p));
+                if (!near_color(got, modelled)) continue;
+                ++matched;
+                if (!first && !near_color(got, raster::mix(raster::colors::black, plan.color, e.coverage))) first = e;
+            }
+            if (judged < 8 || 30 * (judged - matched) > judged) return std::nullopt;
+            return first;
+        };
+        const auto head = [&](const Plan::Aa& e) {
+            const auto intensity = [](Color c) { return std::to_string(int(std::max({c.r, c.g, c.b}))); };
+            return plan.name + ": pixel " + str(e.p) + " has intensity " + intensity(img.at(e.p.x, e.p.y)) +
+                   ", expected about " + intensity(raster::mix(raster::colors::black, plan.color, e.coverage)) + "; ";
+        };
+        const bool steep = std::abs(plan.raw_b.y - plan.raw_a.y) > std::abs(plan.raw_b.x - plan.raw_a.x);
+        const std::string row = steep ? "column" : "row";
+        if (const auto e = explains(WuModel::kTrunc)) {
+            return cp::Finding{"wu coverage",
+                               head(*e) + "the line passes outside the image's first " + row + " there, between " +
+                                   row + "s -1 and 0. Your " + row + "s come from a cast or std::trunc, which rounds "
+                                   "a t between -1 and 0 up to 0 instead of down to -1, so the pixel inside gets the "
+                                   "weight 1 - f > 1: full intensity",
+                               "Take the row with std::floor(t): it rounds down for negative t too. A cast to int "
+                               "rounds toward zero.",
+                               "TODO 5"};
+        }
+        const std::optional<Plan::Aa> snapped = plan.snapping_moves ? explains(WuModel::kSnapped) : std::nullopt;
+        const std::optional<Plan::Aa> integer = explains(WuModel::kIntegerCenters);
+        const std::string integer_words =
+            "Wu with pixel centers at whole numbers (the textbook's convention). Here pixel (x, y) has its center at "
+            "(x + 0.5, y + 0.5): evaluate the line at the column's center x + 0.5 and measure the distance to the "
+            "row centers r + 0.5";
+        const std::string snapped_words =
+            "Wu drawn between the centers of the endpoints' pixels. lines.h says draw_line_aa uses the endpoints as "
+            "given, with no snapping: that is what lets an anti-aliased line sit between pixels";
+        if (snapped && integer) {  // whole-number endpoints: the two mistakes draw the same line
+            return cp::Finding{"wu coverage",
+                               head(*snapped) + "every pixel of this line matches it drawn half a pixel right and "
+                                                "down. Its endpoints are whole numbers, and two mistakes do that: "
+                                                "pixel centers at whole numbers (the textbook's convention; here the "
+                                                "center of pixel (x, y) is (x + 0.5, y + 0.5)), or endpoints snapped "
+                                                "to pixel centers (lines.h: draw_line_aa uses them as given). The "
+                                                "other lines of the scene tell which",
+                               "", "TODO 5"};
+        }
+        if (snapped) {
+            return cp::Finding{"wu coverage", head(*snapped) + "every pixel of this line matches " + snapped_words,
+                               "Snapping belongs to draw_line only; draw_line_aa starts from a and b themselves.",
+                               "TODO 5"};
+        }
+        if (integer) {
+            return cp::Finding{"wu coverage", head(*integer) + "every pixel of this line matches " + integer_words,
+                               "Wu in this course: y = a.y + gradient * (x + 0.5 - a.x) at column x; t = y - 0.5 "
+                               "lies between rows floor(t) and floor(t) + 1.",
+                               "TODO 5"};
+        }
+        return std::nullopt;
+    }
+
+    // Tolerance for anti-aliased pixels: 3 levels per channel. Rounding in blend() and
+    // floating-point differences (FMA, -O3) move a channel by at most 1; a real error (swapped
+    // weights, half-pixel offset) moves it by tens of levels.
+    static constexpr int kTol = 3;
+    static bool near_color(Color a, Color b) {
+        return std::abs(a.r - b.r) <= kTol && std::abs(a.g - b.g) <= kTol && std::abs(a.b - b.b) <= kTol;
+    }
+
     void check_aa(const Plan& plan) {
-        // The scene background is black, so a pixel's expected color is color * coverage.
-        // Tolerance: 3 levels per channel. Rounding in blend() and floating-point differences
-        // (FMA, -O3) move a channel by at most 1; a real error (swapped weights, half-pixel
-        // offset) moves it by tens of levels.
-        constexpr int kTol = 3;
+        // The scene background is black, so a pixel's expected color is color * coverage
+        // (within kTol).
         const bool any_lit = std::any_of(plan.aa_expected.begin(), plan.aa_expected.end(),
                                          [&](const Plan::Aa& e) { return lit(img, e.p); });
         if (!plan.aa_expected.empty() && !any_lit) {
@@ -725,9 +898,7 @@ struct Checker {
             const Color want = raster::mix(raster::colors::black, plan.color, e.coverage);
             const Color swapped = raster::mix(raster::colors::black, plan.color, 1.0 - e.coverage);
             const Color got = img.at(e.p.x, e.p.y);
-            auto near = [](Color a, Color b) {
-                return std::abs(a.r - b.r) <= kTol && std::abs(a.g - b.g) <= kTol && std::abs(a.b - b.b) <= kTol;
-            };
+            const auto near = near_color;
             if (near(got, want)) continue;
             std::ostringstream msg;
             msg << plan.name << ": pixel " << str(e.p) << " has intensity " << int(std::max({got.r, got.g, got.b}))
@@ -751,6 +922,8 @@ struct Checker {
             }
             if (plan.far) {
                 far_failures.push_back({"wu coverage", msg.str(), msg.str() + ". " + kFarWuLesson, "TODO 5", "TODO 5", kFarWuHint});
+            } else if (const auto mistake = wu_mistake(plan)) {
+                j.findings.push_back(*mistake);
             } else if (e.coverage < 1.0 && near(got, swapped) && std::abs(e.coverage - 0.5) > 0.05) {
                 msg << ". The weights look swapped: the pixel nearer the line must get 1 - f";
                 add("wu weights", msg.str(), "TODO 5");

@@ -18,7 +18,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <sstream>
+#include <tuple>
 
 #include "m2/scenes.h"
 
@@ -536,6 +538,9 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
     Tally aa_rule{"fill rule", "have" + aa_rule_rest, "has" + aa_rule_rest, "TODO 4b or 6",
                   "Test each sample with the same covers() as a pixel center: a sample on an edge counts only for a "
                   "top or left edge; m2.top_left checks covers() alone."};
+    // How often each wrong color of a gradient pixel occurs (see `flat` below).
+    std::map<Color, long long, bool (*)(Color, Color)> wrong_gradient_colors{
+        [](Color a, Color b) { return std::tie(a.r, a.g, a.b) < std::tie(b.r, b.g, b.b); }};
     // Two mistakes of fill_triangle's loop move pixels far beyond the edges' ties, so the
     // fill-rule and coverage tallies would misname them; their pictures are computed here
     // (solid triangles only, where a pixel's color says which triangle drew it):
@@ -691,6 +696,7 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
             } else if (got == e.under) {
                 (e.in_last ? last_row : gradient_top ? missing_gradient : missing).add(x, y);
             } else if (gradient_top) {
+                ++wrong_gradient_colors[got];
                 colors.add(x, y, " is " + str(got) + ", expected " + str(e.want) +
                                      (e.gradient_exact ? " (exact " + str_exact(e.exact) + ", rounded to nearest)" : ""));
             } else {
@@ -734,6 +740,24 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
     if (aa_unwritten.count > 0 && aa_box.count > 0) {
         aa_unwritten.count += aa_box.count;
         aa_box.count = 0;
+    }
+    // Wrong gradient pixels nearly all of one color: the weights do not vary from pixel to pixel,
+    // so they are not the edge values over area2. Integer division does that (0 but at the
+    // vertices), and so does a covers() that fills e[] with the values' signs (TODO 4b): shade
+    // divides 1 by area2.
+    if (colors.count >= 10) {
+        const auto flat = std::max_element(wrong_gradient_colors.begin(), wrong_gradient_colors.end(),
+                                           [](const auto& a, const auto& b) { return a.second < b.second; });
+        if (10 * flat->second >= 9 * colors.count) {
+            colors.todo = "TODO 5 or 4b";
+            colors.hint = (flat->second == colors.count ? "All " + std::to_string(colors.count)
+                                                        : std::to_string(flat->second) + " of the " +
+                                                              std::to_string(colors.count)) +
+                          " wrong pixels are " + str(flat->first) + ": the weights do not change across the triangle. Either they are computed with integer "
+                          "division (0 everywhere but at the vertices), or covers() (TODO 4b) fills e[] with "
+                          "something other than the edge values themselves, such as their signs. The weight of "
+                          "vertex k is the edge value of the edge opposite k over area2, in floating point.";
+        }
     }
     // One of the two loop mistakes above explains the picture: it leads, and the fill-rule
     // finding goes (its pixels are among the ones it names; the ties were not the problem).
