@@ -35,7 +35,8 @@
 //  * Normals and lighting happen in WORLD space. A normal goes from model to world space by
 //    the normal matrix (the inverse transpose of the model matrix's upper-left 3x3) and is
 //    then normalized. A normal of length 0 (or not finite) stays the zero vector, and lights
-//    nothing: such a surface shows its ambient color, never NaN.
+//    nothing: such a surface shows its ambient color, never NaN. (raster::normalize keeps only
+//    the zero vector zero; for an infinite or NaN length it gives NaN, so check the length.)
 //
 //  * Lambert. For base color B (levels 0..255), ambient A and lights with intensity I_k (all
 //    per channel, 1 = full strength) and unit directions L_k from the surface TOWARD light k,
@@ -297,7 +298,8 @@ struct Mesh {
     std::vector<Color> face_colors;    // kFaceColor
     std::vector<Color> vertex_colors;  // kVertexColor, per position
     std::vector<Vec2> uvs;             // kChecker, per position
-    std::vector<Vec3> normals;         // per position, model space; empty: vertex_normals()
+    std::vector<Vec3> normals;         // per position, model space; empty (or any other
+                                       // size than positions): vertex_normals()
 };
 
 // Draws the mesh into the frame (already cleared by clear_frame for this scene's needs):
@@ -305,7 +307,9 @@ struct Mesh {
 //    or show normals, to world space with its normal (normal_matrix, normalized); kGouraud
 //    lights every position once here (material as base);
 // 2. per triangle in list order (skipping any with an index out of range or a non-finite clip
-//    coordinate): clip_triangle unless all three vertices are inside; kFlat lights the
+//    coordinate): clip_triangle unless all three vertices are inside (on or within all six
+//    planes; the clip-space origin (0, 0, 0, 0) lies on every one, and a triangle using it is
+//    counted as drawn or culled but covers no pixel, its x / w being NaN); kFlat lights the
 //    triangle once, when the first of its fan triangles that survives culling is drawn; fan (0, i, i + 1); each fan
 //    triangle to the screen (m3::to_screen), culled if needs.cull and back-facing, else
 //    fill_triangle. The fan is the reference's choice: any triangulation of the convex
