@@ -52,7 +52,7 @@
 //    camera's plane). What each function returns for NaN, infinities, coordinates near 1e308
 //    and subnormals is said below (rotate, inverse, look_at, the projections, clipping), and
 //    the checkpoint m3.nonfinite tests those answers; draw_model drops any triangle or edge
-//    with a non-finite clip coordinate. The project also fuzzes the reference with such input
+//    with a non-finite clip coordinate, or with an index outside [0, positions.size()). The project also fuzzes the reference with such input
 //    under AddressSanitizer and UndefinedBehaviorSanitizer; `make fuzz-m3 FUZZ_STUDENT=1` in
 //    your build folder does the same to your code (it needs clang).
 #pragma once
@@ -142,7 +142,9 @@ Mat4 look_at(Vec3 eye, Vec3 target, Vec3 up);
 // z' = (far + near) / (near - far) * z + 2 * far * near / (near - far), w' = -z.
 // Invalid arguments (fovy outside (0, 180), aspect <= 0, near <= 0, far <= near, anything not
 // finite) give the zero matrix, which draws nothing; so do arguments that would put an
-// infinite entry in the matrix (2 * far * near or f / aspect overflowing, e.g. far = DBL_MAX).
+// infinite entry in the matrix (f / aspect overflowing, or 2 * far * near as written above,
+// e.g. far = DBL_MAX). There the entry's value, about -2, is finite: computing it in an order
+// that does not overflow (2 * near * (far / (near - far))) and returning that matrix passes too.
 Mat4 perspective(double fovy_degrees, double aspect, double near, double far);
 // Orthographic: the box [left, right] x [bottom, top] x [-near, -far] of view space becomes
 // the NDC cube; w' = 1. Invalid arguments (left == right, bottom == top, near == far,

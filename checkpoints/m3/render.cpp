@@ -227,6 +227,22 @@ void numbers(Group g, Values& v) {
             v["c.line.ok"] = CALL("clip_line", m3::clip_line(a, b));
             put(v, "c.line.a", a);
             put(v, "c.line.b", b);
+            {
+                // Indices outside positions (-1 and 3 of 3) name no vertex: draw_model skips
+                // those triangles and edges and draws the valid ones.
+                m3::Model bad;
+                bad.positions = {{-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0, 0.5, 0}};
+                bad.triangles = {{0, 1, 2}, {-1, 0, 1}, {0, 1, 3}};
+                bad.edges = {{0, 1}, {-1, 2}, {1, 3}};
+                bad.face_colors = {{200, 200, 200}};
+                raster::Image img = cp::guarded_image(16, 16);
+                const Mat4 id = m3::identity();
+                const m3::Stats st = cp::traced(*g_out, "draw_model", img, [&] {
+                    return m3::draw_model(img, bad, id, id, id, {true, true, false, true, false}, {250, 250, 250});
+                });
+                v["dm.bad_index.filled"] = double(st.triangles_filled);
+                v["dm.bad_index.lines"] = double(st.lines_drawn);
+            }
             break;
         }
     }

@@ -123,11 +123,12 @@ std::vector<Scene> build() {
     out.push_back(numbers("m3.rotation_drift", "10,000 composed rotations",
                           "Compose with doubles; each product must stay a rotation (orthonormal) to about 1e-12.",
                           {1, 2}, {Group::kRotationDrift}));
-    out.push_back(numbers("m3.nonfinite", "NaN, infinities, 1e308 and subnormals: the fallbacks transforms.h pins",
+    out.push_back(numbers("m3.nonfinite", "NaN, infinities, 1e308, subnormals and indices out of range: the fallbacks transforms.h pins",
                           "A non-finite axis gives the identity, a non-finite eye the zero matrix, inverse() false for "
                           "non-finite entries or result, a projection that would hold infinity the zero matrix; huge "
-                          "vectors are scaled by a power of two before normalizing or clipping.",
-                          {2, 3, 4, 5, 7}, {Group::kNonFinite}));
+                          "vectors are scaled by a power of two before normalizing or clipping; draw_model skips a "
+                          "triangle or edge with an index outside positions.",
+                          {2, 3, 4, 5, 7, 11}, {Group::kNonFinite}));
 
     // ---- pictures ----
     {
