@@ -99,7 +99,9 @@ Mat4 rotate_x(double radians);
 Mat4 rotate_y(double radians);
 Mat4 rotate_z(double radians);
 // TODO 2b: rotation about any axis through the origin (Rodrigues' formula). The axis need not
-// have length 1 (normalize it); the zero axis (or a non-finite one) gives the identity.
+// have length 1 (normalize it; as in look_at, an axis whose squared length underflows, such as
+// (1e-200, 0, 0), or overflows, such as (1e200, 0, 0), is scaled by a power of two first, so
+// it keeps its direction); the zero axis (or a non-finite one) gives the identity.
 Mat4 rotate(Vec3 axis, double radians);
 
 // ---- TODO 3: inverses ----

@@ -147,6 +147,28 @@ bool beyond_any(const std::vector<Vec4>& p) {
     });
 }
 
+// Sutherland-Hodgman with the inside test turned round: each plane keeps the vertices OUTSIDE
+// it (da < 0) and adds the crossings. A clip_polygon whose every answer matches this one has
+// its keep test reversed.
+std::vector<Vec4> clip_keeping_outside(std::vector<Vec4> poly) {
+    for (int plane = 0; plane < 6 && !poly.empty(); ++plane) {
+        const auto d = [plane](Vec4 q) {
+            const double c = plane < 2 ? q.x : plane < 4 ? q.y : q.z;
+            return plane % 2 == 0 ? q.w + c : q.w - c;
+        };
+        std::vector<Vec4> next;
+        for (std::size_t i = 0; i < poly.size(); ++i) {
+            const Vec4 a = poly[i], b = poly[(i + 1) % poly.size()];
+            const double da = d(a), db = d(b);
+            if (da < 0) next.push_back(a);
+            if ((da >= 0) != (db >= 0)) next.push_back(a + (b - a) * (da / (da - db)));
+        }
+        poly = next;
+    }
+    if (poly.size() < 3) poly.clear();
+    return poly;
+}
+
 // "(x, y, z, w) lies on the plane x = w" for the first vertex of `tri` inside the closed view
 // volume and exactly on one of its planes (d = 0); empty when there is none.
 std::string on_a_plane(const std::array<Vec4, 3>& tri) {
@@ -243,6 +265,11 @@ std::string nonfinite_note(const Matrix& m) {
 
 // m3.nonfinite: each input is extreme, and the answer is the one transforms.h pins for it
 // (where it pins several, any of them passes). Ordinary answers come from the reference.
+// draw_model culled more triangles than the reference: it may cull before it clips.
+bool culls_first(const Ctx& c) {
+    return get(c.mine, "stats.triangles_culled") > get(c.ref, "stats.triangles_culled");
+}
+
 void judge_nonfinite(Ctx& c) {
     const Values& v = c.mine;
     // TODO 2b: a non-finite axis gives the identity.
@@ -258,6 +285,20 @@ void judge_nonfinite(Ctx& c) {
                               "before dividing by the length");
         c.j.findings.back().hint = "rotate: return the identity when the axis's length is zero or not finite "
                                    "(std::isfinite), before dividing by it";
+    }
+    // TODO 2b: a tiny or huge axis is still a direction: its rotation, as the reference's.
+    const std::pair<const char*, const char*> scaled_axes[] = {{"rot.tiny", "rotate((1e-200, 0, 2e-200), 0.7)"},
+                                                               {"rot.huge", "rotate((1e200, -2e200, 0), 0.7)"}};
+    for (const auto& [key, call] : scaled_axes) {
+        const Matrix a = mat(v, key), b = mat(c.ref, key);
+        if (same(a, b)) continue;
+        c.add("rotation", std::string("TODO 2b: ") + call + " gave " + str(a) + nonfinite_note(a) + ", expected " +
+                              str(b) + ": that axis is finite and not zero, so it names a direction, but its "
+                              "squared length " + (std::string(key) == "rot.tiny" ? "underflows to 0" : "overflows to infinity") +
+                              ". transforms.h pins that normalizing never loses a direction: scale the axis by a power of "
+                              "two first (std::ldexp by -std::ilogb of its largest component), as look_at does");
+        c.j.findings.back().hint = "rotate: normalize the axis as look_at does, with power-of-two scaling when its "
+                                   "length underflows or overflows";
     }
     // TODO 3a: false, with `out` left alone, for a non-finite entry or a result too large.
     static const std::map<std::string, std::string> inverses = {
@@ -783,8 +824,28 @@ void judge_group(Group g, Ctx& c) {
                                            "edges (a, b) of cur, keep a when da >= 0, add the crossing when (da >= 0) != "
                                            "(db >= 0); return cur";
             }
+            // Every triangle clipped as if the keep test were reversed: one finding that says so.
+            bool keeps_outside = !(all_empty && ref_any);
+            for (std::size_t k = 0; k < tris.size() && keeps_outside; ++k) {
+                keeps_outside = same_polygon(polygon(v, "poly" + std::to_string(k)),
+                                             clip_keeping_outside({tris[k][0], tris[k][1], tris[k][2]}));
+            }
+            bool differs = false;
+            for (std::size_t k = 0; k < tris.size(); ++k) {
+                differs |= !same_polygon(polygon(v, "poly" + std::to_string(k)), polygon(c.ref, "poly" + std::to_string(k)));
+            }
+            if (keeps_outside && differs) {
+                c.add("inside test", "TODO 7a: clip_polygon's answers for all " + std::to_string(tris.size()) +
+                                         " triangles are what Sutherland-Hodgman gives when each plane keeps the "
+                                         "vertices OUTSIDE it: e.g. " + str(tris[0][0]) + " " + str(tris[0][1]) + " " +
+                                         str(tris[0][2]) + ", entirely inside, came back empty. For a plane with "
+                                         "distance d (d = w - x for x <= w), a vertex is inside when d >= 0: keep a "
+                                         "when da >= 0, not when da < 0");
+                c.j.findings.back().hint = "Sutherland-Hodgman: keep a when da >= 0; add the crossing when (da >= 0) "
+                                           "!= (db >= 0)";
+            }
             bool crossing_told = false;  // the crossing formula is explained once
-            for (std::size_t k = 0; k < tris.size() && !(all_empty && ref_any); ++k) {
+            for (std::size_t k = 0; k < tris.size() && !(all_empty && ref_any) && !(keeps_outside && differs); ++k) {
                 const std::string key = "poly" + std::to_string(k);
                 const auto a = polygon(v, key), b = polygon(c.ref, key);
                 if (same_polygon(a, b)) continue;
@@ -866,7 +927,26 @@ void judge_group(Group g, Ctx& c) {
                     const std::string what = "clip_line of " + str(lines[k][0]) + " - " + str(lines[k][1]) + " gave " +
                                              (ok == 1 ? str(a) + " - " + str(b) : std::string("nothing")) + ", expected " +
                                              (rok == 1 ? str(ra) + " - " + str(rb) : std::string("nothing"));
-                    c.add(ok == 1 && beyond_near({a, b}) ? "near plane" : "clipping", "TODO 7b: " + what);
+                    const Vec4 mid = (a + b) * 0.5;
+                    const double da_on = lines[k][0].w - lines[k][0].x, db_on = lines[k][1].w - lines[k][1].x;
+                    if (ok == 1 && rok == 1 && beyond_any({mid}) && !beyond_any({(ra + rb) * 0.5})) {
+                        // The piece kept lies outside: the parameter range is the complement.
+                        c.add("clipping", "TODO 7b: " + what + ". The middle of the part you kept, " + str(mid) +
+                                              ", is outside the view volume: you kept the piece beyond a plane "
+                                              "instead of the piece inside. Where the segment ENTERS a plane (da < 0 "
+                                              "<= db) the crossing raises t0; where it LEAVES (db < 0 <= da) it lowers "
+                                              "t1. Swapped, the outside piece survives");
+                        c.j.findings.back().hint = "Liang-Barsky: t0 = max over entering planes, t1 = min over leaving "
+                                                   "planes, reject when t0 > t1";
+                    } else if (ok == 0 && rok == 1 && da_on == 0 && db_on == 0) {
+                        c.add("clipping", "TODO 7b: " + what + ". Both ends lie exactly on the plane x = w (d = 0), "
+                                              "and the planes are closed: a segment on a plane is inside it. Reject "
+                                              "a segment only when both distances are negative (da < 0 and db < 0), "
+                                              "not when they are <= 0");
+                        c.j.findings.back().hint = "the six planes are closed: d = 0 is inside";
+                    } else {
+                        c.add(ok == 1 && beyond_near({a, b}) ? "near plane" : "clipping", "TODO 7b: " + what);
+                    }
                 }
             }
             break;
@@ -1028,17 +1108,25 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
                 why = ": this scene does not need that stage (Needs), so draw_model must not run it";
             } else if (key == "stats.triangles_clipped" && ref == 0) {
                 why = ": every vertex is inside the view volume, so nothing needs clipping";
-            } else if (key == "stats.triangles_clipped" && mine < ref && get(c.mine, "stats.triangles_culled") > 0) {
-                why = ": fewer triangles reached the clipper than the reference's. One possible cause: draw_model "
-                      "culls whole triangles before clipping them. Clipping comes first, in clip space; then each "
-                      "fan triangle of the clipped polygon goes to the screen and is culled there (a triangle "
-                      "crossing the near plane has no screen position before it is clipped, so its winding is "
-                      "not known yet). Count a triangle as clipped when not all three of its vertices are inside";
+            } else if (key == "stats.triangles_clipped" && mine < ref) {
+                why = ": fewer triangles reached the clipper than the reference's. A triangle goes to clip_polygon "
+                      "when any of its vertices is outside any of the six planes -w <= x, y, z <= w";
+                why += culls_first(c) ? ". Yours also culled more triangles than the reference: draw_model seems to "
+                                        "cull whole triangles before clipping them. Clipping comes first, in clip "
+                                        "space; then each fan triangle of the clipped polygon goes to the screen and "
+                                        "is culled there (a triangle crossing the near plane has no screen position "
+                                        "before it is clipped, so its winding is not known yet)"
+                                      : ". Testing only w <= 0 (behind the camera) misses the triangles that cross a "
+                                        "side, the top, the bottom or the far plane; test all six planes, as "
+                                        "clip_polygon does";
             }
             c.add(st[1], "TODO 11: " + num(mine) + " " + st[2] + ", expected " + num(ref) + why);
-            if (key == "stats.triangles_clipped" && mine < ref && get(c.mine, "stats.triangles_culled") > 0) {
-                c.j.findings.back().hint = "per triangle: clip (if not all inside), fan, to_screen, THEN cull each fan "
-                                           "triangle; culling never comes before clipping";
+            if (key == "stats.triangles_clipped" && mine < ref) {
+                c.j.findings.back().hint = culls_first(c)
+                                               ? "per triangle: clip (if not all inside), fan, to_screen, THEN cull "
+                                                 "each fan triangle; culling never comes before clipping"
+                                               : "per triangle: clip unless all three vertices are inside all six "
+                                                 "planes (-w <= x, y, z <= w), then fan, to_screen, cull, fill";
             }
         }
     }

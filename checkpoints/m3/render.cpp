@@ -191,6 +191,8 @@ void numbers(Group g, Values& v) {
             const double max = std::numeric_limits<double>::max();
             put(v, "rot.nan", CALL("rotate", m3::rotate({nan, 0, 1}, 0.7)));
             put(v, "rot.inf", CALL("rotate", m3::rotate({inf, 1, 0}, 0.7)));
+            put(v, "rot.tiny", CALL("rotate", m3::rotate({1e-200, 0, 2e-200}, 0.7)));
+            put(v, "rot.huge", CALL("rotate", m3::rotate({1e200, -2e200, 0}, 0.7)));
             for (const auto& c : nonfinite_inverse_cases()) {
                 // Filled with -7: inverse() that returns false must leave it alone.
                 Mat4 out = to_mat4({{{-7, -7, -7, -7}, {-7, -7, -7, -7}, {-7, -7, -7, -7}, {-7, -7, -7, -7}}});

@@ -416,6 +416,7 @@ static std::vector<std::array<Vec4, 2>> public_clip_line_cases() {
         {{{0.1, 0.2, 0.4, 1}, {0.4, -0.3, 1.3, -1.5}}},  // one end behind the camera
         {{{0.7, 0.35, -1.0, 0.0}, {0.2, 0.1, 0.9, 2.5}}},  // one end at w = 0
         {{{1.5, 0.1, 0.0, 1}, {2.5, 0.4, 0.1, 1}}},      // outside: nothing
+        {{{1.0, 0.2, 0.1, 1}, {0.5, -0.3, 0.2, 0.5}}},   // on the plane x = w: all of it
     };
 }
 

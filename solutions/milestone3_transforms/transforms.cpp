@@ -141,14 +141,33 @@ Mat4 rotate_z(double radians) {
     // END SOLUTION
 }
 
+// BEGIN SOLUTION
+namespace {
+
+// normalize(v), also where v's length overflows or its square underflows: then v is first
+// scaled by a power of two (exactly) so that its largest component is about 1. Zero or not
+// finite: the zero vector.
+Vec3 unit(Vec3 v) {
+    if (!raster::is_finite(v)) return {};
+    const double len = raster::length(v);
+    if (len > 1e-150 && std::isfinite(len)) return raster::normalize(v);
+    const double big = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (!(big > 0)) return {};
+    const int e = std::ilogb(big);
+    return raster::normalize(Vec3{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)});
+}
+
+}  // namespace
+// END SOLUTION
+
 Mat4 rotate(Vec3 axis, double radians) {
     // TODO 2b: with k = the unit axis and K its cross-product matrix,
     // R = I + sin(a) K + (1 - cos(a)) K^2; written out, R[i][j] = cos(a) delta_ij
     // + (1 - cos(a)) k_i k_j - sin(a) epsilon_ijl k_l.
     // BEGIN SOLUTION
-    const double len = raster::length(axis);
-    if (!(len > 0) || !std::isfinite(len) || !std::isfinite(radians)) return identity();
-    const Vec3 k = axis / len;
+    if (!std::isfinite(radians)) return identity();
+    const Vec3 k = unit(axis);  // zero for the zero axis or a non-finite one
+    if (k == Vec3{}) return identity();
     const double c = std::cos(radians), s = std::sin(radians), t = 1 - c;
     Mat4 r = identity();
     r.m[0][0] = c + t * k.x * k.x;
@@ -233,25 +252,6 @@ Mat4 rigid_inverse(const Mat4& a) {
 }
 
 // ---- TODO 4: the camera ----
-
-// BEGIN SOLUTION
-namespace {
-
-// normalize(v), also where v's length overflows or its square underflows: then v is first
-// scaled by a power of two (exactly) so that its largest component is about 1. Zero or not
-// finite: the zero vector.
-Vec3 unit(Vec3 v) {
-    if (!raster::is_finite(v)) return {};
-    const double len = raster::length(v);
-    if (len > 1e-150 && std::isfinite(len)) return raster::normalize(v);
-    const double big = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-    if (!(big > 0)) return {};
-    const int e = std::ilogb(big);
-    return raster::normalize(Vec3{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)});
-}
-
-}  // namespace
-// END SOLUTION
 
 Mat4 look_at(Vec3 eye, Vec3 target, Vec3 up) {
     // TODO 4: build f, r, u as transforms.h says (with both fallbacks), then the rows r, u, -f
