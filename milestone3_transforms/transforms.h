@@ -133,9 +133,9 @@ Mat4 rigid_inverse(const Mat4& a);
 //    (components near 1e308) or whose square underflows (2e-162 apart) is scaled by a power
 //    of two first, so f still has length 1 and points from eye to target.
 //  * The last column may overflow to +/-infinity for an eye beyond about 1e308 (never NaN).
-//  * up parallel to f, i.e. |cross(f, normalize(up))| < 1e-9, or up zero: up is replaced by
-//    the world axis x, y or z along which |f| has its smallest component (the first of them
-//    on a tie), e.g. looking straight down (f = (0, -1, 0)) uses up = (1, 0, 0).
+//  * up parallel to f, i.e. |cross(f, normalize(up))| < 1e-9, or up zero or not finite: up
+//    is replaced by the world axis x, y or z along which |f| has its smallest component (the
+//    first of them on a tie), e.g. looking straight down (f = (0, -1, 0)) uses up = (1, 0, 0).
 Mat4 look_at(Vec3 eye, Vec3 target, Vec3 up);
 
 // ---- TODO 5: projections (view space to clip space), OpenGL's matrices ----

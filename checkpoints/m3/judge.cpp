@@ -387,12 +387,12 @@ void judge_nonfinite(Ctx& c) {
         }
     }
     {
-        const Matrix a = mat(v, "la.nan_up");
-        if (has_nan(a)) {
+        const Matrix a = mat(v, "la.nan_up"), b = mat(c.ref, "la.nan_up");
+        if (!same(a, b)) {
             c.add("look at fallback", "TODO 4: look_at((1, 2, 3), (0, 0, 0), (0, nan, 1)) gave " + str(a) +
-                                          ": transforms.h pins that look_at never returns NaN (any finite answer "
-                                          "passes here). An up that is not finite cannot give r: use the fallback "
-                                          "world axis, as for a zero up");
+                                          nonfinite_note(a) + ", expected " + str(b) +
+                                          ": transforms.h pins that an up that is not finite is replaced like a zero "
+                                          "up, by the world axis along which |f| has its smallest component");
             c.j.findings.back().hint = kLookAtHint;
         }
     }
