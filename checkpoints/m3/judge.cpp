@@ -487,6 +487,27 @@ void judge_nonfinite(Ctx& c) {
         }
     }
     {
+        const std::array<Vec4, 3> edge = inside_end_clip_case();
+        const auto a = polygon(v, "c.inside_end"), b = polygon(c.ref, "c.inside_end");
+        const bool finite = std::all_of(a.begin(), a.end(), [](Vec4 p) {
+            return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+        });
+        if (!finite || !same_polygon(a, b)) {
+            std::string pts;
+            for (const Vec4& p : a) pts += (pts.empty() ? "" : " ") + str(p);
+            c.add("clipping", "TODO 7a: clip_polygon of the triangle " + str(edge[0]) + " " + str(edge[1]) + " " +
+                                  str(edge[2]) + " gave " + std::to_string(a.size()) + " vertices (" + pts + ")" +
+                                  (finite ? ", not the reference's" : ", some of them not finite") +
+                                  ". Only the first vertex is outside (x > w), and the edge from it enters the plane "
+                                  "x = w exactly at the second, whose w is the largest double. Interpolated from the "
+                                  "outside end, o + (i - o) * 1 rounds w past it and overflows to infinity; "
+                                  "transforms.h pins the crossing from the inside end, a + (b - a) * da / (da - db) "
+                                  "with da >= 0 > db, which gives that vertex exactly");
+            c.j.findings.back().hint = "clip_polygon: interpolate each crossing from the edge's inside end (for an "
+                                       "edge that enters, b + (a - b) * db / (db - da))";
+        }
+    }
+    {
         const auto& seg = cases.second;
         const double ok = get(v, "c.line.ok"), rok = get(c.ref, "c.line.ok");
         const Vec4 a = vec4(v, "c.line.a"), b = vec4(v, "c.line.b");

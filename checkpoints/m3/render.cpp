@@ -225,6 +225,8 @@ void numbers(Group g, Values& v) {
             const std::array<Vec4, 3>& tri = cases.first;
             const std::array<Vec4, 2>& seg = cases.second;
             put_polygon(v, "c.poly", CALL("clip_polygon", m3::clip_polygon({tri[0], tri[1], tri[2]})));
+            const std::array<Vec4, 3> edge = inside_end_clip_case();
+            put_polygon(v, "c.inside_end", CALL("clip_polygon", m3::clip_polygon({edge[0], edge[1], edge[2]})));
             Vec4 a = seg[0], b = seg[1];
             v["c.line.ok"] = CALL("clip_line", m3::clip_line(a, b));
             put(v, "c.line.a", a);

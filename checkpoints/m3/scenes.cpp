@@ -552,6 +552,14 @@ std::pair<std::array<Vec4, 3>, std::array<Vec4, 2>> nonfinite_clip_cases() {
     return {tri, seg};
 }
 
+std::array<Vec4, 3> inside_end_clip_case() {
+    // Found by search: only the first vertex is outside any plane (x > w), so the plane order
+    // does not matter, and the polygon walks the edge outside -> inside whatever its start.
+    return {Vec4{1.7148468443562371e+308, -5.2866414770436213e+307, 5.1477679070461008e+307, 8.7043766496172206e+307},
+            Vec4{1.7976931348623157e+308, -3.4011914383546834e+307, 4.0083780542012492e+307, 1.7976931348623157e+308},
+            Vec4{-1.6683788847215912e+307, 6.5093523754853325e+306, -1.765040776713766e+307, 1.7976931348623157e+308}};
+}
+
 std::vector<Group> group_dependencies(Group g) {
     // Number groups that reach their results through transform_point or a product (TODO 1),
     // or through the builders: a wrong product must not read as a wrong rotation.

@@ -105,5 +105,9 @@ std::vector<std::array<Vec4, 2>> clip_line_cases();  // segments in clip space
 // near 1e308 (a plane distance such as w + x overflows), crossing the side planes.
 std::vector<std::pair<std::string, Matrix>> nonfinite_inverse_cases();
 std::pair<std::array<Vec4, 3>, std::array<Vec4, 2>> nonfinite_clip_cases();
+// A triangle near 1e308 whose first edge enters the plane x = w exactly at its second vertex
+// (d = 0 there): from the inside end the crossing is that vertex, exactly; from the outside
+// end, o + (i - o) * 1 rounds w past DBL_MAX (after any power-of-two scaling) and overflows.
+std::array<Vec4, 3> inside_end_clip_case();
 
 }  // namespace m3cp
