@@ -115,6 +115,15 @@ void judge_group(Group g, Ctx& c) {
                                     "; the key ROUNDS to the nearest whole number (std::llround), so " + num(want);
                     }
                 }
+                // Reversed-Z and 1/w without the reversal: the float's bits themselves, which GROW
+                // toward the eye (1/w and 1 - d are larger there).
+                std::string unreversed;
+                if ((k.format == 1 || k.format == 3) && !std::isnan(k.z_ndc) && want != 0xFFFFFFFFu &&
+                    mine == 0x7F800000u - want) {
+                    unreversed = std::string(": that is the bits of float(") + (k.format == 3 ? "1 / w" : "(1 - z_ndc) / 2") +
+                                 ") themselves, which grow toward the eye; the key is kReversedBase - those bits, "
+                                 "reversed so that a nearer point has a SMALLER key like every format's";
+                }
                 c.add(k.format == 1 || k.format == 3 ? "depth format" : "depth key",
                       "TODO 1: depth_key(" + std::string(kFormatNames[k.format]) + ", z_ndc " + num(k.z_ndc) + ", w " +
                           num(k.w) + ") gave " + num(mine) + ", expected " + num(want) +
@@ -127,7 +136,11 @@ void judge_group(Group g, Ctx& c) {
                                  "reversed-Z) is clamped to [0, 1] first: a fragment a rounding error outside the "
                                  "view volume gets the key of the near or the far plane"
                                : "") +
-                          truncated);
+                          truncated + unreversed);
+                if (!unreversed.empty() && !c.j.findings.empty()) {
+                    c.j.findings.back().hint = "reversed-Z and 1/w keys are kReversedBase - the bits of the float, so "
+                                               "that nearer is smaller";
+                }
             }
             break;
         }
@@ -297,11 +310,36 @@ void judge_group(Group g, Ctx& c) {
                     return same3(vec3(v, "shade" + std::to_string(i)),
                                  lambert(k.ambient, reversed_lights(k.lights), k.base, k.position, k.normal), 1e-9);
                 });
+            // Every failing case is exactly B * ambient brighter than the rule (and some case has a
+            // nonzero ambient): the ambient term is added twice. One finding says it.
+            auto ambient_of = [&](std::size_t i) {
+                const auto& k = cases[i];
+                return Vec3{k.base.r * k.ambient.x, k.base.g * k.ambient.y, k.base.b * k.ambient.z};
+            };
+            const bool ambient_twice =
+                !flipped && !only_non_unit && !failing.empty() && std::all_of(failing.begin(), failing.end(), [&](std::size_t i) {
+                    const auto& k = cases[i];
+                    const Vec3 a = ambient_of(i);
+                    return (a.x != 0 || a.y != 0 || a.z != 0) &&
+                           same3(vec3(v, "shade" + std::to_string(i)), lambert(k.ambient, k.lights, k.base, k.position, k.normal) + a, 1e-6);
+                });
+            if (ambient_twice) {
+                const std::size_t i = failing.front();
+                std::string list;
+                for (std::size_t f : failing) list += (list.empty() ? "" : ", ") + std::to_string(f);
+                const auto& k = cases[i];
+                c.add("lambert", "TODO 5a: shade() case " + std::to_string(i) + " gave " + str(vec3(v, "shade" + std::to_string(i))) +
+                                     " levels, expected " + str(lambert(k.ambient, k.lights, k.base, k.position, k.normal)) +
+                                     ": exactly B * ambient = " + str(ambient_of(i)) + " too much, as in every failing case (" +
+                                     list + "): the ambient term is added twice. B * (ambient + sum of I * max(0, N . L)) "
+                                     "counts the ambient once, whatever the lights");
+                if (!c.j.findings.empty()) c.j.findings.back().hint = "add the ambient term once: B * (ambient + sum of the lights' I * max(0, N . L))";
+            }
             std::string also;  // the other failing cases the reversal explains
             for (std::size_t i : failing) {
                 if (flipped && i > 1) also += (also.empty() ? "" : ", ") + std::to_string(i);
             }
-            for (std::size_t i = 0; i < cases.size(); ++i) {
+            for (std::size_t i = 0; i < cases.size() && !ambient_twice; ++i) {
                 const auto& k = cases[i];
                 const Vec3 want = lambert(k.ambient, k.lights, k.base, k.position, k.normal);
                 const Vec3 mine = vec3(v, "shade" + std::to_string(i));
@@ -366,7 +404,21 @@ void judge_group(Group g, Ctx& c) {
             // The levels render.cpp passes (kept in step with it).
             const char* const inputs[] = {"(12.4, 12.6, 128.2)", "(300, -20, 255.4)", "(1e9, -1e9, 254.6)",
                                           "(NaN, 0.49, 127.7)"};
+            // The same levels clamped, then truncated instead of rounded.
+            const Color truncated[] = {{12, 12, 128}, {255, 0, 255}, {255, 0, 254}, {0, 0, 127}};
+            bool truncates = true, any_wrong = false;
             for (int i = 0; i < 4; ++i) {
+                const Color mine = color3(v, "color" + std::to_string(i));
+                any_wrong |= !(mine == want[i]);
+                truncates &= mine == truncated[i];
+            }
+            if (any_wrong && truncates) {
+                c.add("rounding", "TODO 5b: to_color case 0 (levels (12.4, 12.6, 128.2)) gave " + str(color3(v, "color0")) +
+                                      ", expected (12, 13, 128), and cases 2 and 3 lose a level the same way: the clamp "
+                                      "is right, but the channel is truncated (a cast drops the fraction); round to the "
+                                      "nearest level after clamping, so 12.6 becomes 13");
+            }
+            for (int i = 0; i < 4 && !(any_wrong && truncates); ++i) {
                 const std::string key = "color" + std::to_string(i);
                 const Color mine = color3(v, key);
                 if (mine == want[i]) continue;
@@ -652,8 +704,10 @@ std::pair<std::string, std::string> caller_of(const std::string& theme, Shade sh
         return {"rasterizer", "TODO 8: fill_triangle weighs the attributes with perspective_weights"};
     }
     if (theme == "face color") {
-        return {"face color", "TODO 9: draw_mesh colors a kFaceColor triangle with face_colors[face], and a triangle "
-                              "past the end of that list (or of an empty one) white"};
+        return {"face color", "TODO 9: draw_mesh colors a kFaceColor triangle with face_colors[face], face being its "
+                              "index in mesh.triangles (a triangle culled, clipped away or skipped before it still "
+                              "owns its index, so never a count of the triangles drawn), and a triangle past the end "
+                              "of that list (or of an empty one) white"};
     }
     if (theme == "depth clear") return {"pipeline", "TODO 9: every frame starts with clear_frame"};
     if (theme == "normal matrix") {
@@ -879,6 +933,152 @@ void judge_normal_lengths(Ctx& c, const raster::Image& mine, const Panel& p, con
     }
 }
 
+// A normal view of a sphere (item 0 at its position, uniform size), worked out by ray casting:
+// the colors are those of the WORLD normal at the hit. Colors of the same normal turned into
+// view space (normal_matrix(view * model)) differ clearly only when the camera does not look
+// down -z; where they do, more pixels like the view-space colors name that mistake.
+void judge_normal_space(Ctx& c, const raster::Image& mine, const Panel& p, const std::string& where) {
+    if (p.camera.ortho || p.shading != Shade::kNormalView || p.items.empty()) return;
+    const Item& it = p.items[0];
+    const Basis b = basis(p.camera);
+    auto color_of = [](Vec3 n) {
+        const Vec3 u = unit_or_zero(n);
+        return Color{raster::to_channel(127.5 * (u.x + 1)), raster::to_channel(127.5 * (u.y + 1)),
+                     raster::to_channel(127.5 * (u.z + 1))};
+    };
+    cp::PixelVote view_space(16);
+    for (int y = 0; y < p.h; ++y) {
+        for (int x = 0; x < p.w; ++x) {
+            const Vec3 d = unit_or_zero(ray(p, b, x, y));
+            const Vec3 oc = p.camera.eye - it.position;
+            const double r = it.size.x;
+            const double half_b = raster::dot(oc, d), cc = raster::dot(oc, oc) - r * r;
+            const double disc = half_b * half_b - cc;
+            if (disc < 0) continue;
+            const double t = -half_b - std::sqrt(disc);
+            if (!(t > 0)) continue;
+            const Vec3 n = unit_or_zero(p.camera.eye + d * t - it.position);
+            if (-raster::dot(n, d) < 0.3) continue;  // near the outline the facets decide
+            const Vec3 nv{raster::dot(n, b.r), raster::dot(n, b.u), -raster::dot(n, b.f)};
+            view_space.cast(mine.at(p.x0 + x, p.y0 + y), color_of(n), color_of(nv));
+        }
+    }
+    if (view_space.names_mistake()) {
+        c.add("debug view", "TODO 9: " + view_space.tally() + " of the ball" + where +
+                                " your normal colors are those of VIEW-space normals (normal_matrix(view * model)): "
+                                "kNormalView shows the WORLD-space normal, the one draw_mesh gives every vertex "
+                                "through normal_matrix(model) in step 1, whatever the camera");
+        if (!c.j.findings.empty()) {
+            c.j.findings.back().hint = "normals must be in world space: draw_mesh (TODO 9) sends them through "
+                                       "normal_matrix(model), never through the view matrix";
+            std::rotate(c.j.findings.begin(), c.j.findings.end() - 1, c.j.findings.end());  // before the picture's
+        }
+    }
+}
+
+// Two ready-made triangles on the same three vertices (m4.fill_triangle's first and its gray
+// copy): every key of the second ties with the first's exactly, and depth_passes gives each tie
+// to the brighter color. Where the reference shows the later one and yours still shows the
+// earlier one, ties never reached depth_passes (rejected as key >= stored before it).
+void judge_ties(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
+    const auto ref_it = ref.images.find("main");
+    if (ref_it == ref.images.end() || !panel.depth_test) return;
+    auto rounded = [](Vec3 v) { return Color{raster::to_channel(v.x), raster::to_channel(v.y), raster::to_channel(v.z)}; };
+    for (std::size_t i = 0; i < panel.screen_tris.size(); ++i) {
+        for (std::size_t j = i + 1; j < panel.screen_tris.size(); ++j) {
+            const ScreenTri &t = panel.screen_tris[i], &u = panel.screen_tris[j];
+            if (t.screen != u.screen || t.w != u.w) continue;
+            const double area = (t.screen[1].x - t.screen[0].x) * (t.screen[2].y - t.screen[0].y) -
+                                (t.screen[1].y - t.screen[0].y) * (t.screen[2].x - t.screen[0].x);
+            if (area == 0) continue;
+            long long shown = 0, kept = 0;
+            for (int y = 0; y < panel.h; ++y) {
+                for (int x = 0; x < panel.w; ++x) {
+                    const double px = x + 0.5, py = y + 0.5;
+                    double l[3];
+                    for (int k = 0; k < 3; ++k) {
+                        const Vec3 a = t.screen[std::size_t((k + 1) % 3)], b = t.screen[std::size_t((k + 2) % 3)];
+                        l[k] = ((b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x)) / area;
+                    }
+                    if (l[0] < 0.05 || l[1] < 0.05 || l[2] < 0.05) continue;
+                    double q[3], sum = 0;
+                    for (int k = 0; k < 3; ++k) sum += q[k] = panel.perspective_correct ? l[k] / t.w[std::size_t(k)] : l[k];
+                    Vec3 first{}, later{};
+                    for (int k = 0; k < 3; ++k) {
+                        first = first + t.color[std::size_t(k)] * (q[k] / sum);
+                        later = later + u.color[std::size_t(k)] * (q[k] / sum);
+                    }
+                    const Color fc = rounded(first), lc = rounded(later);
+                    if (cp::max_diff(fc, lc) <= 12 || cp::max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), lc) > 3) continue;
+                    ++shown;
+                    kept += cp::max_diff(mine.at(panel.x0 + x, panel.y0 + y), fc) <= 3;
+                }
+            }
+            if (kept >= 10 && 5 * kept >= 4 * shown) {
+                c.add("tie rule", "TODO 8: at " + std::to_string(kept) + " of " + std::to_string(shown) +
+                                      " pixels where triangle " + std::to_string(j + 1) + " ties triangle " +
+                                      std::to_string(i + 1) + "'s keys exactly (the same vertices) and its color is the "
+                                      "brighter, yours kept triangle " + std::to_string(i + 1) + "'s: an exact tie "
+                                      "never reached depth_passes. Skip a fragment only when its key is FARTHER "
+                                      "(key > stored); a tie (key == stored) gets its color and goes to depth_passes, "
+                                      "which gives it to the brighter color");
+                if (!c.j.findings.empty()) {
+                    c.j.findings.back().hint = "an exact tie of keys must reach depth_passes (TODO 2's rule: the "
+                                               "brighter color wins); only a farther key may be rejected early";
+                    // The picture's finding would send the student to the rasterizer in general: this says why.
+                    std::rotate(c.j.findings.begin(), c.j.findings.end() - 1, c.j.findings.end());
+                }
+                return;
+            }
+        }
+    }
+}
+
+// Ready-made triangles with a vertex whose 1 / w overflows (w = 1e-320): wherever that vertex
+// weighs anything, sum(l_i / w_i) is infinite and the fragment falls back to the screen
+// weights. Where the reference shows the screen-weighted color and yours clearly does not, the
+// fallback is missing.
+void judge_extreme_w(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
+    const auto ref_it = ref.images.find("main");
+    if (ref_it == ref.images.end()) return;
+    auto rounded = [](Vec3 v) { return Color{raster::to_channel(v.x), raster::to_channel(v.y), raster::to_channel(v.z)}; };
+    for (const ScreenTri& t : panel.screen_tris) {
+        if (std::isfinite(1 / t.w[0]) && std::isfinite(1 / t.w[1]) && std::isfinite(1 / t.w[2])) continue;
+        const double area = (t.screen[1].x - t.screen[0].x) * (t.screen[2].y - t.screen[0].y) -
+                            (t.screen[1].y - t.screen[0].y) * (t.screen[2].x - t.screen[0].x);
+        if (area == 0) continue;
+        long long shown = 0, off = 0;
+        for (int y = 0; y < panel.h; ++y) {
+            for (int x = 0; x < panel.w; ++x) {
+                const double px = x + 0.5, py = y + 0.5;
+                double l[3];
+                for (int i = 0; i < 3; ++i) {
+                    const Vec3 a = t.screen[std::size_t((i + 1) % 3)], b = t.screen[std::size_t((i + 2) % 3)];
+                    l[i] = ((b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x)) / area;
+                }
+                if (l[0] < 0.05 || l[1] < 0.05 || l[2] < 0.05) continue;
+                const Color sc = rounded(t.color[0] * l[0] + t.color[1] * l[1] + t.color[2] * l[2]);
+                if (cp::max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), sc) > 3) continue;
+                ++shown;
+                off += cp::max_diff(mine.at(panel.x0 + x, panel.y0 + y), sc) > 12;
+            }
+        }
+        if (off >= 10 && 2 * off > shown) {
+            c.add("extreme w", "TODO 8: at " + std::to_string(off) + " of " + std::to_string(shown) +
+                                   " pixels inside the triangle with a vertex of w = 1e-320 your colors are not the "
+                                   "screen-weighted ones: 1 / w overflows there, so sum(l_i / w_i) is infinite, and "
+                                   "fill_triangle must then fall back to the screen weights l (and w = sum(l_i * w_i)), "
+                                   "as perspective_weights does, instead of dividing by the infinite sum (NaN)");
+            if (!c.j.findings.empty()) {
+                c.j.findings.back().hint = "in fill_triangle, where sum(l_i / w_i) is not > 0 or not finite, use the "
+                                           "screen weights l (the header's extreme-w rule)";
+                std::rotate(c.j.findings.begin(), c.j.findings.end() - 1, c.j.findings.end());  // before the picture's
+            }
+            return;
+        }
+    }
+}
+
 // The fill rule on ready-made triangles whose vertices lie on pixel centers, drawn without a
 // depth test (m4.shared_edges): worked out here in exact integers on the 1/16-pixel grid, each
 // pixel shows the last triangle that covers its center by the top-left rule, or the
@@ -986,7 +1186,8 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
 // A finding of fill_triangle's that names an idea (perspective weights, depth keys, the test
 // order, the fill rule), not only a count or "the picture differs".
 bool names_the_idea(const cp::Finding& f) {
-    return f.topic == "perspective" || f.topic == "depth key" || f.topic == "indexing" ||
+    return f.topic == "perspective" || f.topic == "depth key" || f.topic == "indexing" || f.topic == "tie rule" ||
+           f.topic == "extreme w" || f.message.find("was never written") != std::string::npos ||
            (f.topic == "fill rule" && f.message.find("lies exactly on an edge") != std::string::npos) ||
            f.message.find("failed the depth test") != std::string::npos;
 }
@@ -1129,13 +1330,14 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         const bool float_format = panel.format == Format::kFloatZ || panel.format == Format::kReversedZ ||
                                   panel.format == Format::kInverseW;
         const double key_slack = float_format ? 4 : 2;
-        int farther = 0, differ = 0, column_major = 0, off_surface = 0;
+        int farther = 0, differ = 0, column_major = 0, off_surface = 0, cleared = 0;
         for (std::size_t k = 0; k < panel.depth_probes.size(); ++k) {
             const std::string pk = key + ".probe" + std::to_string(k);
             const double a = get(c.mine, pk), b = get(c.ref, pk);
             if (std::abs(a - b) <= key_slack) continue;
             ++differ;
             farther += a > b;
+            cleared += a == 4294967295.0;  // kClearKey
             // The key this pixel should hold sits where a buffer indexed x * height + y keeps it.
             column_major += std::abs(get(c.mine, pk + ".column") - b) <= key_slack;
             if (panel.format == Format::kInverseW) {
@@ -1153,7 +1355,10 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         const bool indexing = differ > 0 && column_major == differ;
         // Every probe that differs holds a 1/w key of no surface at its pixel: the pixel's w.
         const bool pixel_w = differ > 0 && off_surface == differ && !indexing;
-        const bool overwritten = differ > 0 && farther == differ && !indexing && !pixel_w;
+        // Every probe that differs still holds kClearKey, though the reference drew there: no key
+        // was ever written (the test passed, the color was written, the key was not).
+        const bool never_written = differ > 0 && cleared == differ && !indexing && !pixel_w;
+        const bool overwritten = differ > 0 && farther == differ && !indexing && !pixel_w && !never_written;
         // A wrong number of fan triangles drawn changes every pixel count after it: those
         // findings would only repeat it, under the rasterizer's TODO.
         bool triangles_off = false, fragments_off = false;
@@ -1182,6 +1387,12 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         const bool world_needless = per_pixel_shading && !point_lit && mine_shade > 0 && ref_shade > 0 &&
                                     std::abs(get(c.mine, key + ".stats.interpolated") / mine_shade -
                                              get(c.ref, key + ".stats.interpolated") / ref_shade - 3) < 0.25;
+        // The converse: a point light, and 3 values per lit fragment where the reference
+        // interpolates 6: the world position was left out, so the point light is lit from the
+        // wrong place (FillState::point_light never set, draw_mesh's TODO 9).
+        const bool world_missing = per_pixel_shading && point_lit && mine_shade > 0 && ref_shade > 0 &&
+                                   std::abs(get(c.ref, key + ".stats.interpolated") / ref_shade -
+                                            get(c.mine, key + ".stats.interpolated") / mine_shade - 3) < 0.25;
         // A depth-write count off with nothing else to say of it, which screen-weighted colors
         // explain (an exact tie goes to the brighter color, so other colors win other ties).
         std::size_t plain_writes = std::string::npos;
@@ -1211,6 +1422,40 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             // after it only repeat it.
             const bool fill_rule_count = name == "fragments" && s.checks.fill_rule && !panel.screen_tris.empty();
             fragments_off |= fill_rule_count;
+            // Mesh triangles (indices in range) with a NaN or infinite position: draw_mesh drops
+            // them before clipping.
+            long long non_finite = 0;
+            for (const Item& it : panel.items) {
+                const auto& q = it.mesh.positions;
+                const int n = static_cast<int>(q.size());
+                for (const auto& t : it.mesh.triangles) {
+                    if (t[0] < 0 || t[0] >= n || t[1] < 0 || t[1] >= n || t[2] < 0 || t[2] >= n) continue;
+                    bool bad = false;
+                    for (int i : t) {
+                        const Vec3 pt = q[std::size_t(i)];
+                        bad |= !std::isfinite(pt.x) || !std::isfinite(pt.y) || !std::isfinite(pt.z);
+                    }
+                    non_finite += bad;
+                }
+            }
+            if (name == "triangles_clipped" && a > b && non_finite > 0 && a - b == double(non_finite)) {
+                c.add("bad input", "TODO 9: " + num(a) + " triangles sent to clip_triangle" + where + ", expected " + num(b) +
+                                       ": the " + plural(double(non_finite), "triangle") + " with a NaN or infinite "
+                                       "coordinate went there too. draw_mesh drops a triangle with any non-finite clip "
+                                       "coordinate (x, y, z or w) before clipping, culling or counting it: a NaN fails "
+                                       "every plane test, so the clipper alone cannot be trusted with it");
+                continue;
+            }
+            if (name == "triangles_drawn" && a > b && non_finite > 0 && clipped &&
+                get(c.mine, key + ".stats.triangles_clipped") == get(c.ref, key + ".stats.triangles_clipped")) {
+                c.add("clipping", "TODO 7b: " + num(a) + " fan triangles drawn" + where + ", expected " + num(b) +
+                                      ", with as many triangles clipped: the polygons of the huge triangles kept "
+                                      "vertices with w <= 0. Rounding between two huge vertices can cancel every digit "
+                                      "and leave (0, 0, 0, 0), which lies on all six planes; clip_triangle drops every "
+                                      "vertex whose w is not > 0 once the six planes are done, and returns nothing when "
+                                      "fewer than three remain");
+                continue;
+            }
             std::string why;
             if (b == 0 && name == "triangles_culled" && panel.cull) {
                 why = ": back faces are culled here, but every triangle faces the eye once clipped: clip first, then "
@@ -1226,6 +1471,14 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                               "not those that survive, so do not reject any before clip_triangle"
                             : ": only a mesh triangle with a vertex outside some plane (d < 0) goes to clip_triangle; "
                               "one with all three vertices inside is fanned as it is, uncounted";
+            } else if (name == "interpolated" && world_missing) {
+                c.add("per-pixel normals", "TODO 9: " + num(a) + " attribute values interpolated" + where + ", expected about " +
+                                               num(b) + ": 3 per fragment lit, the normal alone, where the reference "
+                                               "interpolates 6. This panel has a point light, whose L depends on where "
+                                               "the fragment is: draw_mesh sets FillState::point_light when any light "
+                                               "is a point light, so that fill_triangle interpolates the world position "
+                                               "too and shade() gets it");
+                continue;
             } else if (name == "interpolated" && world_needless) {
                 why = ": that is " + num(std::round(a / mine_shade * 100) / 100) + " values per fragment lit (per call of "
                       "shade()), where the reference interpolates " + num(std::round(b / ref_shade * 100) / 100) +
@@ -1248,6 +1501,10 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                               "clipping and culling, so a culled or clipped-away face is never lit, and the other fan "
                               "triangles of a clipped face reuse its color"
                             : ": every face with a drawn fan triangle is lit once, when the first of them is drawn";
+            } else if (name == "depth_writes" && never_written) {
+                why = ": the depth probes below still hold kClearKey, so no key was ever stored and every later "
+                      "fragment passes against the cleared value; when a fragment passes, write its key into "
+                      "frame.depth as well as its color";
             } else if (name == "depth_writes" && a > b && overwritten) {
                 why = ": the depth probes below hold keys farther than the reference's, so a fragment that failed "
                       "the depth test wrote its key; test first, and write color and key only when it passes";
@@ -1307,6 +1564,15 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                        "triangle; that sum is only the fallback where sum(l_i / w_i) is not > 0 and finite");
                 continue;
             }
+            if (never_written) {
+                c.add("depth test", "TODO 8: the depth buffer at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                        ")" + where + " still holds kClearKey (" + num(a) + "), expected " + num(b) +
+                                        ", as at every probe that differs, though a fragment was drawn there: the key "
+                                        "was never written. When a fragment passes the depth test, fill_triangle "
+                                        "stores its key in frame.depth (depth[y * width + x] = key) along with its "
+                                        "color, or every later fragment passes too");
+                break;  // one finding says it
+            }
             double d = std::nan("");
             if (panel.format == Format::kFloatZ && b >= 0 && b < 4294967296.0) d = std::bit_cast<float>(static_cast<std::uint32_t>(b));
             // A key written by a rejected fragment is the depth test's order (test, then write).
@@ -1333,6 +1599,9 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
         }
         if (s.checks.fill_rule && !panel.screen_tris.empty()) judge_fill_rule(c, *mine, panel, where);
         if (s.checks.normal_lengths) judge_normal_lengths(c, *mine, panel, where);
+        if (s.id == "m4.normal_view" && keep == std::string::npos) judge_normal_space(c, *mine, panel, where);
+        if (!panel.screen_tris.empty()) judge_extreme_w(c, *mine, ref, panel);
+        if (!panel.screen_tris.empty()) judge_ties(c, *mine, ref, panel);
         if (s.checks.checker_error) {
             const raster::Image truth = analytic_checker(panel);
             long long inside = 0, wrong = 0, ref_wrong = 0;

@@ -185,7 +185,13 @@ std::vector<Scene> build() {
         // color (r first) wins pixel by pixel.
         ScreenTri gray = lit;
         gray.color = {Vec3{150, 150, 150}, Vec3{150, 150, 150}, Vec3{150, 150, 150}};
-        pn.screen_tris = {lit, crossing, gray};
+        // Left of them, a vertex of w = 1e-320 (a near plane of 1e-320): 1 / w overflows, so
+        // sum(l_i / w_i) is infinite wherever that vertex weighs anything, and those fragments
+        // fall back to the screen weights l (the header's rule), never to NaN.
+        const ScreenTri tiny_w{{Vec3{1.6, 30.4, 0.2}, Vec3{15.2, 52.7, 0.4}, Vec3{2.1, 93.2, 0.3}},
+                               {1e-320, 1, 2},
+                               {Vec3{250, 120, 0}, Vec3{0, 200, 120}, Vec3{120, 60, 250}}};
+        pn.screen_tris = {lit, crossing, gray, tiny_w};
         pn.depth_probes = {{40, 30}, {70, 50}, {90, 70}};
         s.panels.push_back(pn);
         add(s);
@@ -481,14 +487,21 @@ std::vector<Scene> build() {
         add(s);
     }
     {
-        Scene s = picture("m4.normal_view", "Normals as colors", "round(255 * (n + 1) / 2) of the world-space normal",
-                          {6, 4, 9}, 96, 96);
+        Scene s = picture("m4.normal_view", "Normals as colors (right: the ball seen from the side and above)",
+                          "round(255 * (n + 1) / 2) of the WORLD-space normal, whatever the camera",
+                          {6, 4, 9}, 192, 96);
         Item ball = item(sphere_mesh(16, false));
         ball.axis = {1, 0.4, 0};
         ball.angle = 0.6;
         Panel pn = panel(cam({0.03, 0.05, 3.2}), {ball}, 0, 0, 96, 96, Shade::kNormalView);
         pn.cull = true;
         s.panels.push_back(pn);
+        // Right: the same ball seen from the side and above. The colors are those of the WORLD
+        // normals, whatever the camera: a camera looking down -z hardly turns them, this one
+        // turns view-space normals far from the world's.
+        Panel side = panel(cam({2.6, 1.9, 0.9}), {ball}, 96, 0, 96, 96, Shade::kNormalView);
+        side.cull = true;
+        s.panels.push_back(side);
         add(s);
     }
 
@@ -613,15 +626,24 @@ std::vector<Scene> build() {
                           "a triangle without a face color (past the end of face_colors, or none at all) is drawn "
                           "white",
                           {9, 8}, 96, 96);
-        // A hexagon of six triangles with three face colors, and a quad with none.
+        // A hexagon of six triangles with four face colors, and a quad with none. The hexagon's
+        // second triangle (face 1) lies far outside the view: wholly clipped, it draws nothing,
+        // yet it owns face color 1, so the faces after it keep their own indices (a count of
+        // the faces drawn so far would shift every later color by one).
         Mesh hexagon;
         hexagon.positions.push_back({-0.5, 0.2, 0});
         for (int k = 0; k < 6; ++k) {
             const double a = std::numbers::pi * (0.1 + k / 3.0);
             hexagon.positions.push_back({-0.5 + 1.3 * std::cos(a), 0.2 + 1.3 * std::sin(a), 0});
         }
-        for (int k = 0; k < 6; ++k) hexagon.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
-        hexagon.face_colors = {kRed, kGreen, kBlue};
+        hexagon.positions.push_back({-40, -1, 0});
+        hexagon.positions.push_back({-38, -1, 0});
+        hexagon.positions.push_back({-39, 1, 0});
+        for (int k = 0; k < 6; ++k) {
+            hexagon.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
+            if (k == 0) hexagon.triangles.push_back({7, 8, 9});
+        }
+        hexagon.face_colors = {kRed, kYellow, kGreen, kBlue};
         Mesh quad = quad_mesh({0.6, -1.6, -0.5}, {1.7, -1.5, -0.5}, {1.6, -0.4, -0.5}, {0.5, -0.5, -0.5}, kRed);
         quad.face_colors.clear();
         Panel pn = panel(cam({0.02, 0.03, 4.5}), {item(hexagon), item(quad)}, 0, 0, 96, 96, Shade::kFaceColor);
