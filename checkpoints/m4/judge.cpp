@@ -1454,6 +1454,10 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                       "and leave (0, 0, 0, 0), which lies on all six planes; clip_triangle drops every "
                                       "vertex whose w is not > 0 once the six planes are done, and returns nothing when "
                                       "fewer than three remain");
+                if (!c.j.findings.empty()) {
+                    c.j.findings.back().hint = "after the six planes, clip_triangle drops every vertex whose w is not > 0 "
+                                               "(it has no place on the screen)";
+                }
                 continue;
             }
             std::string why;

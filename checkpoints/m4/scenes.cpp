@@ -188,9 +188,10 @@ std::vector<Scene> build() {
         // Left of them, a vertex of w = 1e-320 (a near plane of 1e-320): 1 / w overflows, so
         // sum(l_i / w_i) is infinite wherever that vertex weighs anything, and those fragments
         // fall back to the screen weights l (the header's rule), never to NaN.
-        const ScreenTri tiny_w{{Vec3{1.6, 30.4, 0.2}, Vec3{15.2, 52.7, 0.4}, Vec3{2.1, 93.2, 0.3}},
+        // Its colors change slowly, so a wrong pixel inside it is wrong beyond any edge tolerance.
+        const ScreenTri tiny_w{{Vec3{1.6, 24.4, 0.2}, Vec3{17.2, 56.7, 0.4}, Vec3{2.1, 94.2, 0.3}},
                                {1e-320, 1, 2},
-                               {Vec3{250, 120, 0}, Vec3{0, 200, 120}, Vec3{120, 60, 250}}};
+                               {Vec3{230, 150, 60}, Vec3{120, 200, 120}, Vec3{90, 120, 230}}};
         pn.screen_tris = {lit, crossing, gray, tiny_w};
         pn.depth_probes = {{40, 30}, {70, 50}, {90, 70}};
         s.panels.push_back(pn);
