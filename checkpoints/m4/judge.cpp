@@ -1482,6 +1482,14 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                                "the fragment is: draw_mesh sets FillState::point_light when any light "
                                                "is a point light, so that fill_triangle interpolates the world position "
                                                "too and shade() gets it");
+                if (!c.j.findings.empty()) {
+                    c.j.findings.back().hint = "with a point light, draw_mesh (TODO 9) sets FillState::point_light so "
+                                               "that fill_triangle interpolates the world position for shade()";
+                    // It says why the picture differs: before the picture's finding, which names no cause.
+                    if (keep == std::string::npos && c.j.findings.front().message.rfind("the picture differs", 0) == 0) {
+                        std::rotate(c.j.findings.begin(), c.j.findings.end() - 1, c.j.findings.end());
+                    }
+                }
                 continue;
             } else if (name == "interpolated" && world_needless) {
                 why = ": that is " + num(std::round(a / mine_shade * 100) / 100) + " values per fragment lit (per call of "
