@@ -788,19 +788,16 @@ void judge_shading_chart(Ctx& c, const raster::Image& mine, const cp::Artifacts&
     c.j.pictures["error_vs_time"] = raster::plot(chart);
 }
 
-// The ready-made triangles' colors, worked out here at pixels well inside the first triangle
-// where the reference shows it (not hidden, not a tie lost to the gray copy), both with the
-// perspective-correct weights and with the screen weights: more pixels matching the second
-// than the first name the mistake.
-void judge_screen_weights(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
-    const auto ref_it = ref.images.find("main");
-    if (ref_it == ref.images.end() || !panel.perspective_correct) return;
-    const ScreenTri& t = panel.screen_tris[0];
+Color rounded(Vec3 v) { return Color{raster::to_channel(v.x), raster::to_channel(v.y), raster::to_channel(v.z)}; }
+
+// Calls f(x, y, l) for each pixel of the panel whose center lies well inside the ready-made
+// triangle t (every screen weight l_i at least 0.05), with its screen weights; nothing for a
+// triangle of zero area.
+template <class F>
+void for_inner_pixels(const ScreenTri& t, const Panel& panel, F&& f) {
     const double area = (t.screen[1].x - t.screen[0].x) * (t.screen[2].y - t.screen[0].y) -
                         (t.screen[1].y - t.screen[0].y) * (t.screen[2].x - t.screen[0].x);
     if (area == 0) return;
-    auto rounded = [](Vec3 v) { return Color{raster::to_channel(v.x), raster::to_channel(v.y), raster::to_channel(v.z)}; };
-    cp::PixelVote screen_weighted;
     for (int y = 0; y < panel.h; ++y) {
         for (int x = 0; x < panel.w; ++x) {
             const double px = x + 0.5, py = y + 0.5;
@@ -810,18 +807,32 @@ void judge_screen_weights(Ctx& c, const raster::Image& mine, const cp::Artifacts
                 l[i] = ((b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x)) / area;
             }
             if (l[0] < 0.05 || l[1] < 0.05 || l[2] < 0.05) continue;
-            double q[3], sum = 0;
-            for (int i = 0; i < 3; ++i) sum += q[i] = l[i] / t.w[std::size_t(i)];
-            Vec3 persp{}, flat{};
-            for (int i = 0; i < 3; ++i) {
-                persp = persp + t.color[std::size_t(i)] * (q[i] / sum);
-                flat = flat + t.color[std::size_t(i)] * l[i];
-            }
-            const Color pc = rounded(persp), sc = rounded(flat);
-            if (cp::max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), pc) > 3) continue;
-            screen_weighted.cast(mine.at(panel.x0 + x, panel.y0 + y), pc, sc);
+            f(x, y, l);
         }
     }
+}
+
+// The ready-made triangles' colors, worked out here at pixels well inside the first triangle
+// where the reference shows it (not hidden, not a tie lost to the gray copy), both with the
+// perspective-correct weights and with the screen weights: more pixels matching the second
+// than the first name the mistake.
+void judge_screen_weights(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
+    const auto ref_it = ref.images.find("main");
+    if (ref_it == ref.images.end() || !panel.perspective_correct) return;
+    const ScreenTri& t = panel.screen_tris[0];
+    cp::PixelVote screen_weighted;
+    for_inner_pixels(t, panel, [&](int x, int y, const double* l) {
+        double q[3], sum = 0;
+        for (int i = 0; i < 3; ++i) sum += q[i] = l[i] / t.w[std::size_t(i)];
+        Vec3 persp{}, flat{};
+        for (int i = 0; i < 3; ++i) {
+            persp = persp + t.color[std::size_t(i)] * (q[i] / sum);
+            flat = flat + t.color[std::size_t(i)] * l[i];
+        }
+        const Color pc = rounded(persp), sc = rounded(flat);
+        if (cp::max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), pc) > 3) return;
+        screen_weighted.cast(mine.at(panel.x0 + x, panel.y0 + y), pc, sc);
+    });
     if (screen_weighted.names_mistake()) {
         c.add("perspective", "TODO 8: " + screen_weighted.tally() + " inside the first triangle your colors are the SCREEN-weighted ones: weigh "
                                  "each vertex by l_i / w_i and normalize (perspective_weights) unless "
@@ -872,6 +883,13 @@ std::vector<double> surface_ws(const Panel& p, int x, int y) {
     return out;
 }
 
+// The normal view's color of a normal (normal_color's rule, recomputed here).
+Color color_of(Vec3 n) {
+    const Vec3 u = unit_or_zero(n);
+    return Color{raster::to_channel(127.5 * (u.x + 1)), raster::to_channel(127.5 * (u.y + 1)),
+                 raster::to_channel(127.5 * (u.z + 1))};
+}
+
 // A normal view of normals given per position (m4.nonuniform_scale's right panel), worked out
 // by ray casting: at the hit, the world-space barycentric weights ARE the perspective-correct
 // weights. The header's way normalizes each normal after the normal matrix (R * S^-1 for
@@ -880,11 +898,6 @@ std::vector<double> surface_ws(const Panel& p, int x, int y) {
 void judge_normal_lengths(Ctx& c, const raster::Image& mine, const Panel& p, const std::string& where) {
     if (p.camera.ortho || p.shading != Shade::kNormalView) return;
     const Basis b = basis(p.camera);
-    auto color_of = [](Vec3 n) {
-        const Vec3 u = unit_or_zero(n);
-        return Color{raster::to_channel(127.5 * (u.x + 1)), raster::to_channel(127.5 * (u.y + 1)),
-                     raster::to_channel(127.5 * (u.z + 1))};
-    };
     cp::PixelVote unnormalized(12);
     for (int y = 0; y < p.h; ++y) {
         for (int x = 0; x < p.w; ++x) {
@@ -941,11 +954,6 @@ void judge_normal_space(Ctx& c, const raster::Image& mine, const Panel& p, const
     if (p.camera.ortho || p.shading != Shade::kNormalView || p.items.empty()) return;
     const Item& it = p.items[0];
     const Basis b = basis(p.camera);
-    auto color_of = [](Vec3 n) {
-        const Vec3 u = unit_or_zero(n);
-        return Color{raster::to_channel(127.5 * (u.x + 1)), raster::to_channel(127.5 * (u.y + 1)),
-                     raster::to_channel(127.5 * (u.z + 1))};
-    };
     cp::PixelVote view_space(16);
     for (int y = 0; y < p.h; ++y) {
         for (int x = 0; x < p.w; ++x) {
@@ -983,37 +991,24 @@ void judge_normal_space(Ctx& c, const raster::Image& mine, const Panel& p, const
 void judge_ties(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
     const auto ref_it = ref.images.find("main");
     if (ref_it == ref.images.end() || !panel.depth_test) return;
-    auto rounded = [](Vec3 v) { return Color{raster::to_channel(v.x), raster::to_channel(v.y), raster::to_channel(v.z)}; };
     for (std::size_t i = 0; i < panel.screen_tris.size(); ++i) {
         for (std::size_t j = i + 1; j < panel.screen_tris.size(); ++j) {
             const ScreenTri &t = panel.screen_tris[i], &u = panel.screen_tris[j];
             if (t.screen != u.screen || t.w != u.w) continue;
-            const double area = (t.screen[1].x - t.screen[0].x) * (t.screen[2].y - t.screen[0].y) -
-                                (t.screen[1].y - t.screen[0].y) * (t.screen[2].x - t.screen[0].x);
-            if (area == 0) continue;
             long long shown = 0, kept = 0;
-            for (int y = 0; y < panel.h; ++y) {
-                for (int x = 0; x < panel.w; ++x) {
-                    const double px = x + 0.5, py = y + 0.5;
-                    double l[3];
-                    for (int k = 0; k < 3; ++k) {
-                        const Vec3 a = t.screen[std::size_t((k + 1) % 3)], b = t.screen[std::size_t((k + 2) % 3)];
-                        l[k] = ((b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x)) / area;
-                    }
-                    if (l[0] < 0.05 || l[1] < 0.05 || l[2] < 0.05) continue;
-                    double q[3], sum = 0;
-                    for (int k = 0; k < 3; ++k) sum += q[k] = panel.perspective_correct ? l[k] / t.w[std::size_t(k)] : l[k];
-                    Vec3 first{}, later{};
-                    for (int k = 0; k < 3; ++k) {
-                        first = first + t.color[std::size_t(k)] * (q[k] / sum);
-                        later = later + u.color[std::size_t(k)] * (q[k] / sum);
-                    }
-                    const Color fc = rounded(first), lc = rounded(later);
-                    if (cp::max_diff(fc, lc) <= 12 || cp::max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), lc) > 3) continue;
-                    ++shown;
-                    kept += cp::max_diff(mine.at(panel.x0 + x, panel.y0 + y), fc) <= 3;
+            for_inner_pixels(t, panel, [&](int x, int y, const double* l) {
+                double q[3], sum = 0;
+                for (int k = 0; k < 3; ++k) sum += q[k] = panel.perspective_correct ? l[k] / t.w[std::size_t(k)] : l[k];
+                Vec3 first{}, later{};
+                for (int k = 0; k < 3; ++k) {
+                    first = first + t.color[std::size_t(k)] * (q[k] / sum);
+                    later = later + u.color[std::size_t(k)] * (q[k] / sum);
                 }
-            }
+                const Color fc = rounded(first), lc = rounded(later);
+                if (cp::max_diff(fc, lc) <= 12 || cp::max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), lc) > 3) return;
+                ++shown;
+                kept += cp::max_diff(mine.at(panel.x0 + x, panel.y0 + y), fc) <= 3;
+            });
             if (kept >= 10 && 5 * kept >= 4 * shown) {
                 c.add("tie rule", "TODO 8: at " + std::to_string(kept) + " of " + std::to_string(shown) +
                                       " pixels where triangle " + std::to_string(j + 1) + " ties triangle " +
@@ -1041,28 +1036,15 @@ void judge_ties(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, con
 void judge_extreme_w(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
     const auto ref_it = ref.images.find("main");
     if (ref_it == ref.images.end()) return;
-    auto rounded = [](Vec3 v) { return Color{raster::to_channel(v.x), raster::to_channel(v.y), raster::to_channel(v.z)}; };
     for (const ScreenTri& t : panel.screen_tris) {
         if (std::isfinite(1 / t.w[0]) && std::isfinite(1 / t.w[1]) && std::isfinite(1 / t.w[2])) continue;
-        const double area = (t.screen[1].x - t.screen[0].x) * (t.screen[2].y - t.screen[0].y) -
-                            (t.screen[1].y - t.screen[0].y) * (t.screen[2].x - t.screen[0].x);
-        if (area == 0) continue;
         long long shown = 0, off = 0;
-        for (int y = 0; y < panel.h; ++y) {
-            for (int x = 0; x < panel.w; ++x) {
-                const double px = x + 0.5, py = y + 0.5;
-                double l[3];
-                for (int i = 0; i < 3; ++i) {
-                    const Vec3 a = t.screen[std::size_t((i + 1) % 3)], b = t.screen[std::size_t((i + 2) % 3)];
-                    l[i] = ((b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x)) / area;
-                }
-                if (l[0] < 0.05 || l[1] < 0.05 || l[2] < 0.05) continue;
-                const Color sc = rounded(t.color[0] * l[0] + t.color[1] * l[1] + t.color[2] * l[2]);
-                if (cp::max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), sc) > 3) continue;
-                ++shown;
-                off += cp::max_diff(mine.at(panel.x0 + x, panel.y0 + y), sc) > 12;
-            }
-        }
+        for_inner_pixels(t, panel, [&](int x, int y, const double* l) {
+            const Color sc = rounded(t.color[0] * l[0] + t.color[1] * l[1] + t.color[2] * l[2]);
+            if (cp::max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), sc) > 3) return;
+            ++shown;
+            off += cp::max_diff(mine.at(panel.x0 + x, panel.y0 + y), sc) > 12;
+        });
         if (off >= 10 && 2 * off > shown) {
             c.add("extreme w", "TODO 8: at " + std::to_string(off) + " of " + std::to_string(shown) +
                                    " pixels inside the triangle with a vertex of w = 1e-320 your colors are not the "
