@@ -58,7 +58,7 @@ std::string PixelVote::tally() const {
     return "at " + std::to_string(mistake_like_) + " of " + std::to_string(telling_) + " pixels";
 }
 
-void add_finding(Judgement& j, const std::string& topic, const std::string& msg) {
+void add_finding(Judgement& j, const std::string& topic, const std::string& msg, const std::string& hint) {
     std::string todo, text = msg;
     const auto colon = msg.find(": ");
     if (msg.rfind("TODO", 0) == 0 && colon != std::string::npos && colon < 20) {
@@ -68,7 +68,7 @@ void add_finding(Judgement& j, const std::string& topic, const std::string& msg)
     for (const Finding& f : j.findings) {
         if (f.topic == topic && f.message == text) return;
     }
-    j.findings.push_back({topic, text, "", todo});
+    j.findings.push_back({topic, text, hint, todo});
 }
 
 Tolerance edge_tolerance(const raster::Image& expected, const std::string& why) {

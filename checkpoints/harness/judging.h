@@ -58,7 +58,8 @@ private:
 
 // Adds a finding unless one with this topic and text is there: "TODO 5: message" (the label
 // before the first ": ", when it starts with "TODO" and is short) puts "TODO 5" into its todo.
-void add_finding(Judgement& j, const std::string& topic, const std::string& msg);
+// `hint`, if any, is the finding's own (shown instead of the scene's hint).
+void add_finding(Judgement& j, const std::string& topic, const std::string& msg, const std::string& hint = "");
 
 // Pixels next to an edge or a color boundary of the expected image (a neighbour differs by more
 // than 16 levels in a channel) may differ, up to a fifth of them; elsewhere 3 levels. `why` is

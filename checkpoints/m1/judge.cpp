@@ -115,10 +115,9 @@ struct Plan {
     // Band lines: endpoint pixels that every correct draw_line draws all the same (an endpoint
     // inside the image that no clipping moved: draw_line snaps it to its own pixel).
     std::vector<Pix> pinned_ends;
-    // The endpoints as the scene gives them (before draw_line snaps them), and whether
-    // snapping moves either (see lost_unsnapped and wu_mistake).
+    // The endpoints as the scene gives them, before draw_line snaps them (see lost_unsnapped
+    // and wu_mistake).
     Vec2 raw_a{}, raw_b{};
-    bool snapping_moves = false;
 };
 
 constexpr double kFar = 1e15;
@@ -179,6 +178,11 @@ void plan_unjudged(Plan& plan, int w, int h) {
 Vec2 snapped_center(Vec2 p) { return {std::floor(p.x) + 0.5, std::floor(p.y) + 0.5}; }
 
 bool inside(const Vec2& p, int w, int h) { return p.x >= 0 && p.y >= 0 && p.x < w && p.y < h; }
+
+// Whether snapping to pixel centers moves either endpoint of the plan's segment.
+bool snapping_moves(const Plan& plan) {
+    return !(snapped_center(plan.raw_a) == plan.raw_a) || !(snapped_center(plan.raw_b) == plan.raw_b);
+}
 
 // Whether the segment a-b meets the closed box [x0, x1] x [y0, y1] (Liang-Barsky).
 bool meets(Vec2 a, Vec2 b, double x0, double y0, double x1, double y1) {
@@ -328,6 +332,8 @@ void plan_aa(Plan& plan, Vec2 a, Vec2 b, int w, int h) {
 Plan make_plan(const Segment& s, int w, int h, bool force_band) {
     Plan plan;
     plan.name = "line from " + str(s.a) + " to " + str(s.b);
+    plan.raw_a = s.a;
+    plan.raw_b = s.b;
     plan.color = s.color;
     plan.aa = s.aa;
     if (!raster::is_finite(s.a) || !raster::is_finite(s.b)) return plan;  // draws nothing
@@ -345,9 +351,6 @@ Plan make_plan(const Segment& s, int w, int h, bool force_band) {
         }
     }
     const Vec2 c0 = snapped_center(s.a), c1 = snapped_center(s.b);
-    plan.raw_a = s.a;
-    plan.raw_b = s.b;
-    plan.snapping_moves = !(c0 == s.a) || !(c1 == s.b);
     if (s.aa) {
         plan_aa(plan, s.a, s.b, w, h);
         return plan;
@@ -537,7 +540,7 @@ struct Checker {
     // centers: a draw_line that clips the endpoints before snapping them cuts that part away,
     // though its pixels are in the image. No correct draw_line loses such a pixel.
     bool lost_unsnapped(const Plan& plan, double x0, double y0, double x1, double y1) const {
-        if (!plan.snapping_moves || plan.far || plan.aa) return false;
+        if (!snapping_moves(plan) || plan.far || plan.aa) return false;
         const double w = img.width(), h = img.height();
         return meets(plan.raw_a, plan.raw_b, x0, y0, x1, y1) &&
                !meets(plan.raw_a, plan.raw_b, std::max(x0, 0.5), std::max(y0, 0.5), std::min(x1, w - 0.5),
@@ -819,7 +822,7 @@ struct Checker {
                                "rounds toward zero.",
                                "TODO 5"};
         }
-        const std::optional<Plan::Aa> snapped = plan.snapping_moves ? explains(WuModel::kSnapped) : std::nullopt;
+        const std::optional<Plan::Aa> snapped = snapping_moves(plan) ? explains(WuModel::kSnapped) : std::nullopt;
         const std::optional<Plan::Aa> integer = explains(WuModel::kIntegerCenters);
         const std::string integer_words =
             "Wu with pixel centers at whole numbers (the textbook's convention). Here pixel (x, y) has its center at "

@@ -9,6 +9,7 @@
 #include "m3/judge.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -139,11 +140,21 @@ bool beyond_near(const std::vector<Vec4>& p) {
     const double tol = 1e-9 * std::max(1.0, scale_of(p));
     return std::any_of(p.begin(), p.end(), [tol](Vec4 q) { return q.z + q.w < -tol || q.w <= 0; });
 }
+// The signed distances of q to the six planes, in the order x >= -w, x <= w, y >= -w, y <= w,
+// z >= -w, z <= w (inside: all >= 0).
+std::array<double, 6> plane_distances(Vec4 q) {
+    return {q.w + q.x, q.w - q.x, q.w + q.y, q.w - q.y, q.w + q.z, q.w - q.z};
+}
+bool all_finite(const std::vector<Vec4>& p) {
+    return std::all_of(p.begin(), p.end(), [](Vec4 q) {
+        return std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z) && std::isfinite(q.w);
+    });
+}
 bool beyond_any(const std::vector<Vec4>& p) {
     const double tol = 1e-9 * std::max(1.0, scale_of(p));
     return std::any_of(p.begin(), p.end(), [tol](Vec4 q) {
-        return !(q.w + q.x >= -tol && q.w - q.x >= -tol && q.w + q.y >= -tol && q.w - q.y >= -tol && q.w + q.z >= -tol &&
-                 q.w - q.z >= -tol);
+        const auto d = plane_distances(q);
+        return !std::all_of(d.begin(), d.end(), [tol](double x) { return x >= -tol; });
     });
 }
 
@@ -152,14 +163,10 @@ bool beyond_any(const std::vector<Vec4>& p) {
 // its keep test reversed.
 std::vector<Vec4> clip_keeping_outside(std::vector<Vec4> poly) {
     for (int plane = 0; plane < 6 && !poly.empty(); ++plane) {
-        const auto d = [plane](Vec4 q) {
-            const double c = plane < 2 ? q.x : plane < 4 ? q.y : q.z;
-            return plane % 2 == 0 ? q.w + c : q.w - c;
-        };
         std::vector<Vec4> next;
         for (std::size_t i = 0; i < poly.size(); ++i) {
             const Vec4 a = poly[i], b = poly[(i + 1) % poly.size()];
-            const double da = d(a), db = d(b);
+            const double da = plane_distances(a)[std::size_t(plane)], db = plane_distances(b)[std::size_t(plane)];
             if (da < 0) next.push_back(a);
             if ((da >= 0) != (db >= 0)) next.push_back(a + (b - a) * (da / (da - db)));
         }
@@ -174,8 +181,8 @@ std::vector<Vec4> clip_keeping_outside(std::vector<Vec4> poly) {
 std::string on_a_plane(const std::array<Vec4, 3>& tri) {
     static const char* kNames[6] = {"x = -w", "x = w", "y = -w", "y = w", "z = -w", "z = w"};
     for (const Vec4& q : tri) {
-        const double d[6] = {q.w + q.x, q.w - q.x, q.w + q.y, q.w - q.y, q.w + q.z, q.w - q.z};
-        if (!std::all_of(d, d + 6, [](double x) { return x >= 0; })) continue;
+        const auto d = plane_distances(q);
+        if (!std::all_of(d.begin(), d.end(), [](double x) { return x >= 0; })) continue;
         for (int k = 0; k < 6; ++k) {
             if (d[k] == 0) {
                 return "(" + num(q.x) + ", " + num(q.y) + ", " + num(q.z) + ", " + num(q.w) + ") lies on the plane " +
@@ -194,7 +201,8 @@ struct Ctx {
     const raster::Image& expected;  // may be empty (the harness reports that)
     // A message that starts with "TODO 4: " or "TODO 5, 6: " carries its TODO: it goes into
     // Finding::todo, which the harness prints as "(TODO 4)".
-    void add(const std::string& topic, const std::string& msg) {
+    // A hint of its own (shown instead of the scene's) is set only when the finding is new.
+    void add(const std::string& topic, const std::string& msg, const std::string& hint = "") {
         std::string todo, text = msg;
         const auto colon = msg.find(": ");
         if (msg.rfind("TODO ", 0) == 0 && colon != std::string::npos && colon < 16) {
@@ -205,7 +213,7 @@ struct Ctx {
         for (const cp::Finding& f : j.findings) {
             if (f.topic == topic && f.message == text) return;
         }
-        j.findings.push_back({topic, text, "", todo});
+        j.findings.push_back({topic, text, hint, todo});
     }
     // Compares matrix `key` with the reference's; returns false (and adds a finding) if off.
     bool matrix(const std::string& key, const std::string& topic, const std::string& what) {
@@ -278,13 +286,14 @@ void judge_nonfinite(Ctx& c) {
     for (const auto& [key, call] : rotations) {
         const Matrix a = mat(v, key);
         if (same(a, identity_matrix())) continue;
-        c.add("rotation", std::string("TODO 2b: ") + call + " gave " + str(a) + nonfinite_note(a) +
-                              ", expected the identity: transforms.h pins that a non-finite axis, like the zero "
-                              "axis, gives the identity. A NaN is neither 0 nor anything else (every comparison with "
-                              "it is false), so a test such as len == 0 lets it through; test std::isfinite(len) too "
-                              "before dividing by the length");
-        c.j.findings.back().hint = "rotate: return the identity when the axis's length is zero or not finite "
-                                   "(std::isfinite), before dividing by it";
+        c.add("rotation",
+              std::string("TODO 2b: ") + call + " gave " + str(a) + nonfinite_note(a) +
+                  ", expected the identity: transforms.h pins that a non-finite axis, like the zero "
+                  "axis, gives the identity. A NaN is neither 0 nor anything else (every comparison with "
+                  "it is false), so a test such as len == 0 lets it through; test std::isfinite(len) too "
+                  "before dividing by the length",
+              "rotate: return the identity when the axis's length is zero or not finite "
+              "(std::isfinite), before dividing by it");
     }
     // TODO 2b: a tiny or huge axis is still a direction: its rotation, as the reference's.
     const std::pair<const char*, const char*> scaled_axes[] = {{"rot.tiny", "rotate((1e-200, 0, 2e-200), 0.7)"},
@@ -292,13 +301,15 @@ void judge_nonfinite(Ctx& c) {
     for (const auto& [key, call] : scaled_axes) {
         const Matrix a = mat(v, key), b = mat(c.ref, key);
         if (same(a, b)) continue;
-        c.add("rotation", std::string("TODO 2b: ") + call + " gave " + str(a) + nonfinite_note(a) + ", expected " +
-                              str(b) + ": that axis is finite and not zero, so it names a direction, but its "
-                              "squared length " + (std::string(key) == "rot.tiny" ? "underflows to 0" : "overflows to infinity") +
-                              ". transforms.h pins that normalizing never loses a direction: scale the axis by a power of "
-                              "two first (std::ldexp by -std::ilogb of its largest component), as look_at does");
-        c.j.findings.back().hint = "rotate: normalize the axis as look_at does, with power-of-two scaling when its "
-                                   "length underflows or overflows";
+        c.add("rotation",
+              std::string("TODO 2b: ") + call + " gave " + str(a) + nonfinite_note(a) + ", expected " + str(b) +
+                  ": that axis is finite and not zero, so it names a direction, but its "
+                  "squared length " +
+                  (std::string(key) == "rot.tiny" ? "underflows to 0" : "overflows to infinity") +
+                  ". transforms.h pins that normalizing never loses a direction: scale the axis by a power of "
+                  "two first (std::ldexp by -std::ilogb of its largest component), as look_at does",
+              "rotate: normalize the axis as look_at does, with power-of-two scaling when its "
+              "length underflows or overflows");
     }
     // TODO 3a: false, with `out` left alone, for a non-finite entry or a result too large.
     static const std::map<std::string, std::string> inverses = {
@@ -315,12 +326,13 @@ void judge_nonfinite(Ctx& c) {
             for (double x : row) untouched &= x == -7;
         }
         if (ok != 0) {
-            c.add("inverse", "TODO 3a: inverse() returned true for " + what + ", with " + str(out) + nonfinite_note(out) +
-                                 ". transforms.h pins false here: a matrix with an entry that is NaN or infinite has "
-                                 "no inverse, and neither has one whose inverse would not be finite. Check the entries "
-                                 "with std::isfinite first, and check every entry of the result before writing `out`");
-            c.j.findings.back().hint = "inverse(): false for a non-finite entry, and false when an entry of the "
-                                       "result is not finite (test it before writing out)";
+            c.add("inverse",
+                  "TODO 3a: inverse() returned true for " + what + ", with " + str(out) + nonfinite_note(out) +
+                      ". transforms.h pins false here: a matrix with an entry that is NaN or infinite has "
+                      "no inverse, and neither has one whose inverse would not be finite. Check the entries "
+                      "with std::isfinite first, and check every entry of the result before writing `out`",
+                  "inverse(): false for a non-finite entry, and false when an entry of the "
+                  "result is not finite (test it before writing out)");
         } else if (!untouched) {
             c.add("inverse", "TODO 3a: inverse() returned false for " + what + ", as it must, but changed `out` to " +
                                  str(out) + ": transforms.h pins that false leaves `out` alone (the caller may keep "
@@ -359,9 +371,10 @@ void judge_nonfinite(Ctx& c) {
     for (const LookAt& l : look_ats) {
         const Matrix a = mat(v, l.key), b = mat(c.ref, l.key);
         if (same(a, b)) continue;
-        c.add("look at fallback", std::string("TODO 4: ") + l.call + " gave " + str(a) + nonfinite_note(a) + ", expected " +
-                                      str(b) + ": transforms.h pins that " + l.rule);
-        c.j.findings.back().hint = kLookAtHint;
+        c.add("look at fallback",
+              std::string("TODO 4: ") + l.call + " gave " + str(a) + nonfinite_note(a) + ", expected " + str(b) +
+                  ": transforms.h pins that " + l.rule,
+              kLookAtHint);
     }
     {
         // An eye beyond 1e308: the rows must be right; the last column may overflow to
@@ -377,23 +390,24 @@ void judge_nonfinite(Ctx& c) {
         }
         if (!ok) {
             c.add("look at fallback",
-                  "TODO 4: look_at((1.7e308, -1.2e308, 9e307), that eye + (-1e307, 5e306, -3e306), (0, 1, 0)) gave " + str(a) +
-                      nonfinite_note(a) + ", expected " + str(b) +
+                  "TODO 4: look_at((1.7e308, -1.2e308, 9e307), that eye + (-1e307, 5e306, -3e306), (0, 1, 0)) gave " +
+                      str(a) + nonfinite_note(a) + ", expected " + str(b) +
                       " (in the last column, an infinity of the expected sign passes too): transforms.h pins that "
                       "the rows r, u, -f are right and the last column may overflow to +/-infinity, but nothing is "
                       "NaN. The direction target - eye is an ordinary 1e307-sized vector here; normalize it with the "
-                      "power-of-two scaling");
-            c.j.findings.back().hint = kLookAtHint;
+                      "power-of-two scaling",
+                  kLookAtHint);
         }
     }
     {
         const Matrix a = mat(v, "la.nan_up"), b = mat(c.ref, "la.nan_up");
         if (!same(a, b)) {
-            c.add("look at fallback", "TODO 4: look_at((1, 2, 3), (0, 0, 0), (0, nan, 1)) gave " + str(a) +
-                                          nonfinite_note(a) + ", expected " + str(b) +
-                                          ": transforms.h pins that an up that is not finite is replaced like a zero "
-                                          "up, by the world axis along which |f| has its smallest component");
-            c.j.findings.back().hint = kLookAtHint;
+            c.add("look at fallback",
+                  "TODO 4: look_at((1, 2, 3), (0, 0, 0), (0, nan, 1)) gave " + str(a) + nonfinite_note(a) +
+                      ", expected " + str(b) +
+                      ": transforms.h pins that an up that is not finite is replaced like a zero "
+                      "up, by the world axis along which |f| has its smallest component",
+                  kLookAtHint);
         }
     }
     // TODO 5: the projections.
@@ -423,12 +437,13 @@ void judge_nonfinite(Ctx& c) {
         const Matrix a = mat(v, key);
         if (is_zero(a)) continue;
         if (std::string(key) == "p.max_far" && finite_max_far(a)) continue;
-        c.add("projection", std::string("TODO 5: ") + what + "; it gave " + str(a) + nonfinite_note(a) +
-                                ", expected the zero matrix, which transforms.h pins for invalid arguments and for "
-                                "arguments that would put an infinite entry in the matrix. Check every argument with "
-                                "std::isfinite, and every entry you computed, before returning");
-        c.j.findings.back().hint = "projections: the zero matrix for an argument that is not finite, and for an entry "
-                                   "that overflows to infinity (check each entry with std::isfinite)";
+        c.add("projection",
+              std::string("TODO 5: ") + what + "; it gave " + str(a) + nonfinite_note(a) +
+                  ", expected the zero matrix, which transforms.h pins for invalid arguments and for "
+                  "arguments that would put an infinite entry in the matrix. Check every argument with "
+                  "std::isfinite, and every entry you computed, before returning",
+              "projections: the zero matrix for an argument that is not finite, and for an entry "
+              "that overflows to infinity (check each entry with std::isfinite)");
     }
     static const std::pair<const char*, const char*> valid[] = {
         {"p.huge_far", "perspective(60, 1.5, 0.1, 1e300)"},
@@ -454,11 +469,12 @@ void judge_nonfinite(Ctx& c) {
                   "TODO 11: draw_model of a model with 3 positions whose triangles are (0, 1, 2), (-1, 0, 1), "
                   "(0, 1, 3) and whose edges are (0, 1), (-1, 2), (1, 3) filled " +
                       num(filled) + " triangles and drew " + num(lines) + " lines, expected " + num(rfilled) + " and " +
-                      num(rlines) + ": transforms.h pins that a triangle or edge with an index outside "
+                      num(rlines) +
+                      ": transforms.h pins that a triangle or edge with an index outside "
                       "[0, positions.size()) is skipped. Reading positions[-1] is undefined behaviour: it may "
-                      "crash, or draw from whatever memory lies there");
-            c.j.findings.back().hint = "draw_model: check every index of a triangle or edge against "
-                                       "positions.size() before using it, and skip the ones out of range";
+                      "crash, or draw from whatever memory lies there",
+                  "draw_model: check every index of a triangle or edge against "
+                  "positions.size() before using it, and skip the ones out of range");
         }
     }
     // TODO 7: coordinates near 1e308: finite ends, the reference's points.
@@ -468,43 +484,41 @@ void judge_nonfinite(Ctx& c) {
     const auto& tri = cases.first;
     {
         const auto a = polygon(v, "c.poly"), b = polygon(c.ref, "c.poly");
-        const bool finite = std::all_of(a.begin(), a.end(), [](Vec4 p) {
-            return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
-        });
+        const bool finite = all_finite(a);
         if (!finite || !same_polygon(a, b)) {
             std::string pts, rpts;
             for (const Vec4& p : a) pts += (pts.empty() ? "" : " ") + str(p);
             for (const Vec4& p : b) rpts += (rpts.empty() ? "" : " ") + str(p);
-            c.add("clipping", "TODO 7a: clip_polygon of the triangle " + str(tri[0]) + " " + str(tri[1]) + " " + str(tri[2]) +
-                                  " gave " + std::to_string(a.size()) + " vertices (" + pts + "), expected " +
-                                  std::to_string(b.size()) + " (" + rpts + ")" +
-                                  (finite ? "" : ", and some of yours are not finite") +
-                                  ". A plane distance such as w + x overflows to infinity here, and a crossing "
-                                  "inf / inf is NaN. transforms.h pins the remedy: when some |coordinate| exceeds "
-                                  "2^500, scale every vertex by the same power of two (std::ldexp), clip, and scale "
-                                  "the result back: finite input gives finite output");
-            c.j.findings.back().hint = kHugeClipHint;
+            c.add("clipping",
+                  "TODO 7a: clip_polygon of the triangle " + str(tri[0]) + " " + str(tri[1]) + " " + str(tri[2]) +
+                      " gave " + std::to_string(a.size()) + " vertices (" + pts + "), expected " +
+                      std::to_string(b.size()) + " (" + rpts + ")" +
+                      (finite ? "" : ", and some of yours are not finite") +
+                      ". A plane distance such as w + x overflows to infinity here, and a crossing "
+                      "inf / inf is NaN. transforms.h pins the remedy: when some |coordinate| exceeds "
+                      "2^500, scale every vertex by the same power of two (std::ldexp), clip, and scale "
+                      "the result back: finite input gives finite output",
+                  kHugeClipHint);
         }
     }
     {
         const std::array<Vec4, 3> edge = inside_end_clip_case();
         const auto a = polygon(v, "c.inside_end"), b = polygon(c.ref, "c.inside_end");
-        const bool finite = std::all_of(a.begin(), a.end(), [](Vec4 p) {
-            return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
-        });
+        const bool finite = all_finite(a);
         if (!finite || !same_polygon(a, b)) {
             std::string pts;
             for (const Vec4& p : a) pts += (pts.empty() ? "" : " ") + str(p);
-            c.add("clipping", "TODO 7a: clip_polygon of the triangle " + str(edge[0]) + " " + str(edge[1]) + " " +
-                                  str(edge[2]) + " gave " + std::to_string(a.size()) + " vertices (" + pts + ")" +
-                                  (finite ? ", not the reference's" : ", some of them not finite") +
-                                  ". Only the first vertex is outside (x > w), and the edge from it enters the plane "
-                                  "x = w exactly at the second, whose w is the largest double. Interpolated from the "
-                                  "outside end, o + (i - o) * 1 rounds w past it and overflows to infinity; "
-                                  "transforms.h pins the crossing from the inside end, a + (b - a) * da / (da - db) "
-                                  "with da >= 0 > db, which gives that vertex exactly");
-            c.j.findings.back().hint = "clip_polygon: interpolate each crossing from the edge's inside end (for an "
-                                       "edge that enters, b + (a - b) * db / (db - da))";
+            c.add("clipping",
+                  "TODO 7a: clip_polygon of the triangle " + str(edge[0]) + " " + str(edge[1]) + " " + str(edge[2]) +
+                      " gave " + std::to_string(a.size()) + " vertices (" + pts + ")" +
+                      (finite ? ", not the reference's" : ", some of them not finite") +
+                      ". Only the first vertex is outside (x > w), and the edge from it enters the plane "
+                      "x = w exactly at the second, whose w is the largest double. Interpolated from the "
+                      "outside end, o + (i - o) * 1 rounds w past it and overflows to infinity; "
+                      "transforms.h pins the crossing from the inside end, a + (b - a) * da / (da - db) "
+                      "with da >= 0 > db, which gives that vertex exactly",
+                  "clip_polygon: interpolate each crossing from the edge's inside end (for an "
+                  "edge that enters, b + (a - b) * db / (db - da))");
         }
     }
     {
@@ -514,13 +528,14 @@ void judge_nonfinite(Ctx& c) {
         const Vec4 ra = vec4(c.ref, "c.line.a"), rb = vec4(c.ref, "c.line.b");
         const double sc = scale_of({ra, rb});
         if (ok != rok || (rok == 1 && !(same4(a, ra, sc) && same4(b, rb, sc)))) {
-            c.add("clipping", "TODO 7b: clip_line of " + str(seg[0]) + " - " + str(seg[1]) + " gave " +
-                                  (ok == 1 ? str(a) + " - " + str(b) : std::string("nothing")) + ", expected " +
-                                  (rok == 1 ? str(ra) + " - " + str(rb) : std::string("nothing")) +
-                                  ". w + x overflows to infinity at the right end; as in clip_polygon, scale both ends "
-                                  "by a power of two when some |coordinate| exceeds 2^500 (transforms.h): finite ends "
-                                  "give finite ends");
-            c.j.findings.back().hint = kHugeClipHint;
+            c.add("clipping",
+                  "TODO 7b: clip_line of " + str(seg[0]) + " - " + str(seg[1]) + " gave " +
+                      (ok == 1 ? str(a) + " - " + str(b) : std::string("nothing")) + ", expected " +
+                      (rok == 1 ? str(ra) + " - " + str(rb) : std::string("nothing")) +
+                      ". w + x overflows to infinity at the right end; as in clip_polygon, scale both ends "
+                      "by a power of two when some |coordinate| exceeds 2^500 (transforms.h): finite ends "
+                      "give finite ends",
+                  kHugeClipHint);
         }
     }
 }
@@ -651,13 +666,14 @@ void judge_group(Group g, Ctx& c) {
                                              (k == 1 ? " (its first pivot needs a row swap)" : "");
                     if (same(a, b)) continue;
                     if (sizes) {
-                        c.add("inverse", what + ": got " + str(a) + ", expected " + str(b) +
-                                             ". Every entry has the right size, but some have the wrong sign. With "
-                                             "cofactors, cofactor (i, j) is (-1)^(i + j) times the minor without row i "
-                                             "and column j (a checkerboard of signs, not one sign per column or row), "
-                                             "and the inverse is the TRANSPOSED cofactor matrix divided by det");
-                        c.j.findings.back().hint = "cofactors: inverse[i][j] = (-1)^(i + j) * minor(j, i) / det; "
-                                                   "Gauss-Jordan: pivot on the largest |entry| of the column";
+                        c.add("inverse",
+                              what + ": got " + str(a) + ", expected " + str(b) +
+                                  ". Every entry has the right size, but some have the wrong sign. With "
+                                  "cofactors, cofactor (i, j) is (-1)^(i + j) times the minor without row i "
+                                  "and column j (a checkerboard of signs, not one sign per column or row), "
+                                  "and the inverse is the TRANSPOSED cofactor matrix divided by det",
+                              "cofactors: inverse[i][j] = (-1)^(i + j) * minor(j, i) / det; "
+                              "Gauss-Jordan: pivot on the largest |entry| of the column");
                     } else {
                         c.matrix(key, "inverse", what);
                     }
@@ -672,14 +688,15 @@ void judge_group(Group g, Ctx& c) {
                         for (int j = 0; j < 3; ++j) rot_ok &= close(a[i][j], b[i][j]);
                     }
                     const bool minus_t = rot_ok && close(a[0][3], -3) && close(a[1][3], 1) && close(a[2][3], -2);
-                    c.add("inverse", "TODO 3b: rigid_inverse of rotate_z(0.5) with translation t = (3, -1, 2): got " +
-                                         str(a) + ", expected " + str(b) +
-                                         (minus_t ? ". The rotation part is right (R^T), but the last column is -t; it "
-                                                    "must be -R^T t: the inverse first undoes the move (-t), then the "
-                                                    "turn (R^T), so R^T turns the move back as well"
-                                                  : ""));
-                    c.j.findings.back().hint = "rigid_inverse: R^T in the upper-left 3x3, -R^T t in the last column, "
-                                               "0 0 0 1 below; no elimination (the inverse of [R t] is [R^T -R^T t])";
+                    c.add("inverse",
+                          "TODO 3b: rigid_inverse of rotate_z(0.5) with translation t = (3, -1, 2): got " + str(a) +
+                              ", expected " + str(b) +
+                              (minus_t ? ". The rotation part is right (R^T), but the last column is -t; it "
+                                         "must be -R^T t: the inverse first undoes the move (-t), then the "
+                                         "turn (R^T), so R^T turns the move back as well"
+                                       : ""),
+                          "rigid_inverse: R^T in the upper-left 3x3, -R^T t in the last column, "
+                          "0 0 0 1 below; no elimination (the inverse of [R t] is [R^T -R^T t])");
                 }
             }
             break;
@@ -687,14 +704,15 @@ void judge_group(Group g, Ctx& c) {
         case Group::kNearSingular: {
             const Matrix a = near_singular_matrix();
             if (get(v, "ok") != 1) {
-                c.add("inverse", "TODO 3a: this matrix (condition number 1e12) is invertible, but inverse() returned false: "
-                                 "is your singularity threshold absolute, or too large? With Gauss-Jordan, compare each "
-                                 "pivot with a threshold relative to the entries (the reference: 1e-14 times the largest "
-                                 "|entry|). With cofactors, no threshold on det carries over: det is about 1e-24 here "
-                                 "(the product of all pivots), so call the matrix singular only when det == 0 or when det "
-                                 "or an entry of the result is not finite");
-                c.j.findings.back().hint = "singular means: a pivot <= 1e-14 * largest |entry| (Gauss-Jordan), or det "
-                                           "== 0 / a non-finite result (cofactors); never a fixed threshold";
+                c.add("inverse",
+                      "TODO 3a: this matrix (condition number 1e12) is invertible, but inverse() returned false: "
+                      "is your singularity threshold absolute, or too large? With Gauss-Jordan, compare each "
+                      "pivot with a threshold relative to the entries (the reference: 1e-14 times the largest "
+                      "|entry|). With cofactors, no threshold on det carries over: det is about 1e-24 here "
+                      "(the product of all pivots), so call the matrix singular only when det == 0 or when det "
+                      "or an entry of the result is not finite",
+                      "singular means: a pivot <= 1e-14 * largest |entry| (Gauss-Jordan), or det "
+                      "== 0 / a non-finite result (cofactors); never a fixed threshold");
                 break;
             }
             // Every entry of the right size, some of the wrong sign: the cofactors' signs.
@@ -723,12 +741,13 @@ void judge_group(Group g, Ctx& c) {
             c.j.measures["residual |M M^-1 - I|"] = worst;
             if (!(worst <= 1e-3)) {
                 if (sizes && signs) {
-                    c.add("inverse", "TODO 3a: |M * inverse(M) - I| = " + num(worst) +
-                                         " (at most 1e-3 allowed for condition 1e12): every entry of your inverse has "
-                                         "the right size, but some have the wrong sign. With cofactors, cofactor (i, j) "
-                                         "is (-1)^(i + j) times its minor, and the inverse is the TRANSPOSED cofactor "
-                                         "matrix divided by det");
-                    c.j.findings.back().hint = "cofactors: inverse[i][j] = (-1)^(i + j) * minor(j, i) / det";
+                    c.add("inverse",
+                          "TODO 3a: |M * inverse(M) - I| = " + num(worst) +
+                              " (at most 1e-3 allowed for condition 1e12): every entry of your inverse has "
+                              "the right size, but some have the wrong sign. With cofactors, cofactor (i, j) "
+                              "is (-1)^(i + j) times its minor, and the inverse is the TRANSPOSED cofactor "
+                              "matrix divided by det",
+                          "cofactors: inverse[i][j] = (-1)^(i + j) * minor(j, i) / det");
                 } else {
                     c.add("inverse", "TODO 3a: |M * inverse(M) - I| = " + num(worst) +
                                          " (at most 1e-3 allowed for condition 1e12): pivot on the largest |entry| of "
@@ -780,11 +799,13 @@ void judge_group(Group g, Ctx& c) {
                                          ", which is 1 / tan(45 radians). fovy is in DEGREES: convert with * pi / 180");
                 } else if (close(mat(v, "persp60")[1][1], 1 / std::tan(std::numbers::pi / 3))) {
                     // f = 1 / tan(fovy) instead of 1 / tan(fovy / 2): 90 degrees gives f = 0.
-                    c.add("projection", "TODO 5: perspective(60, 1.5, 0.5, 50) has f = " + num(mat(v, "persp60")[1][1]) +
-                                            " = 1 / tan(60 degrees), expected 1 / tan(30 degrees) = " +
-                                            num(1 / std::tan(std::numbers::pi / 6)) + ": fovy is the whole vertical angle, "
-                                            "from the bottom of the view to the top, so f = 1 / tan(fovy / 2)");
-                    c.j.findings.back().hint = "halve fovy: the half angle, from the view's axis to its top edge, sets f";
+                    c.add("projection",
+                          "TODO 5: perspective(60, 1.5, 0.5, 50) has f = " + num(mat(v, "persp60")[1][1]) +
+                              " = 1 / tan(60 degrees), expected 1 / tan(30 degrees) = " +
+                              num(1 / std::tan(std::numbers::pi / 6)) +
+                              ": fovy is the whole vertical angle, "
+                              "from the bottom of the view to the top, so f = 1 / tan(fovy / 2)",
+                          "halve fovy: the half angle, from the view's axis to its top edge, sets f");
                 } else {
                     c.add("projection", "TODO 5: perspective(90, 2, 1, 10) = " + str(p) + ", expected " + str(pr));
                 }
@@ -835,15 +856,17 @@ void judge_group(Group g, Ctx& c) {
                 ref_any |= !polygon(c.ref, "poly" + std::to_string(k)).empty();
             }
             if (all_empty && ref_any) {
-                c.add("clipping", "TODO 7a: clip_polygon returned no vertices at all, for each of the " +
-                                      std::to_string(tris.size()) + " triangles, even for " + str(tris[0][0]) + " " +
-                                      str(tris[0][1]) + " " + str(tris[0][2]) + ", which lies entirely inside the view "
-                                      "volume and must come back unchanged: clip_polygon is not written yet (or returns "
-                                      "its empty result). Start from the input polygon and clip it against each of the "
-                                      "six planes in turn");
-                c.j.findings.back().hint = "TODO 7a is not written yet: start with cur = poly; for each plane, walk the "
-                                           "edges (a, b) of cur, keep a when da >= 0, add the crossing when (da >= 0) != "
-                                           "(db >= 0); return cur";
+                c.add("clipping",
+                      "TODO 7a: clip_polygon returned no vertices at all, for each of the " +
+                          std::to_string(tris.size()) + " triangles, even for " + str(tris[0][0]) + " " +
+                          str(tris[0][1]) + " " + str(tris[0][2]) +
+                          ", which lies entirely inside the view "
+                          "volume and must come back unchanged: clip_polygon is not written yet (or returns "
+                          "its empty result). Start from the input polygon and clip it against each of the "
+                          "six planes in turn",
+                      "TODO 7a is not written yet: start with cur = poly; for each plane, walk the "
+                      "edges (a, b) of cur, keep a when da >= 0, add the crossing when (da >= 0) != "
+                      "(db >= 0); return cur");
             }
             // Every triangle clipped as if the keep test were reversed: one finding that says so.
             bool keeps_outside = !(all_empty && ref_any);
@@ -856,14 +879,16 @@ void judge_group(Group g, Ctx& c) {
                 differs |= !same_polygon(polygon(v, "poly" + std::to_string(k)), polygon(c.ref, "poly" + std::to_string(k)));
             }
             if (keeps_outside && differs) {
-                c.add("inside test", "TODO 7a: clip_polygon's answers for all " + std::to_string(tris.size()) +
-                                         " triangles are what Sutherland-Hodgman gives when each plane keeps the "
-                                         "vertices OUTSIDE it: e.g. " + str(tris[0][0]) + " " + str(tris[0][1]) + " " +
-                                         str(tris[0][2]) + ", entirely inside, came back empty. For a plane with "
-                                         "distance d (d = w - x for x <= w), a vertex is inside when d >= 0: keep a "
-                                         "when da >= 0, not when da < 0");
-                c.j.findings.back().hint = "Sutherland-Hodgman: keep a when da >= 0; add the crossing when (da >= 0) "
-                                           "!= (db >= 0)";
+                c.add("inside test",
+                      "TODO 7a: clip_polygon's answers for all " + std::to_string(tris.size()) +
+                          " triangles are what Sutherland-Hodgman gives when each plane keeps the "
+                          "vertices OUTSIDE it: e.g. " +
+                          str(tris[0][0]) + " " + str(tris[0][1]) + " " + str(tris[0][2]) +
+                          ", entirely inside, came back empty. For a plane with "
+                          "distance d (d = w - x for x <= w), a vertex is inside when d >= 0: keep a "
+                          "when da >= 0, not when da < 0",
+                      "Sutherland-Hodgman: keep a when da >= 0; add the crossing when (da >= 0) "
+                      "!= (db >= 0)");
             }
             bool crossing_told = false;  // the crossing formula is explained once
             for (std::size_t k = 0; k < tris.size() && !(all_empty && ref_any) && !(keeps_outside && differs); ++k) {
@@ -952,19 +977,22 @@ void judge_group(Group g, Ctx& c) {
                     const double da_on = lines[k][0].w - lines[k][0].x, db_on = lines[k][1].w - lines[k][1].x;
                     if (ok == 1 && rok == 1 && beyond_any({mid}) && !beyond_any({(ra + rb) * 0.5})) {
                         // The piece kept lies outside: the parameter range is the complement.
-                        c.add("clipping", "TODO 7b: " + what + ". The middle of the part you kept, " + str(mid) +
-                                              ", is outside the view volume: you kept the piece beyond a plane "
-                                              "instead of the piece inside. Where the segment ENTERS a plane (da < 0 "
-                                              "<= db) the crossing raises t0; where it LEAVES (db < 0 <= da) it lowers "
-                                              "t1. Swapped, the outside piece survives");
-                        c.j.findings.back().hint = "Liang-Barsky: t0 = max over entering planes, t1 = min over leaving "
-                                                   "planes, reject when t0 > t1";
+                        c.add("clipping",
+                              "TODO 7b: " + what + ". The middle of the part you kept, " + str(mid) +
+                                  ", is outside the view volume: you kept the piece beyond a plane "
+                                  "instead of the piece inside. Where the segment ENTERS a plane (da < 0 "
+                                  "<= db) the crossing raises t0; where it LEAVES (db < 0 <= da) it lowers "
+                                  "t1. Swapped, the outside piece survives",
+                              "Liang-Barsky: t0 = max over entering planes, t1 = min over leaving "
+                              "planes, reject when t0 > t1");
                     } else if (ok == 0 && rok == 1 && da_on == 0 && db_on == 0) {
-                        c.add("clipping", "TODO 7b: " + what + ". Both ends lie exactly on the plane x = w (d = 0), "
-                                              "and the planes are closed: a segment on a plane is inside it. Reject "
-                                              "a segment only when both distances are negative (da < 0 and db < 0), "
-                                              "not when they are <= 0");
-                        c.j.findings.back().hint = "the six planes are closed: d = 0 is inside";
+                        c.add("clipping",
+                              "TODO 7b: " + what +
+                                  ". Both ends lie exactly on the plane x = w (d = 0), "
+                                  "and the planes are closed: a segment on a plane is inside it. Reject "
+                                  "a segment only when both distances are negative (da < 0 and db < 0), "
+                                  "not when they are <= 0",
+                              "the six planes are closed: d = 0 is inside");
                     } else {
                         c.add(ok == 1 && beyond_near({a, b}) ? "near plane" : "clipping", "TODO 7b: " + what);
                     }
@@ -1210,20 +1238,21 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
     bool culled_ok = true;
     for (const cp::Finding& f : c.j.findings) culled_ok &= f.topic != "culling";
     if (s.painter && counts_ok && differs && !use_wrong) {
-        c.add("painter", "TODO 11: painter_order passes its own checks (m3.painter's numbers), and so do the "
-                         "matrices and the clipper, yet the picture differs where no edge is "
-                         "near: the faces cover each other in another order. draw_model must fill the triangles in the "
-                         "order painter_order returns: model.triangles[order[0]] first (the farthest), then "
-                         "model.triangles[order[1]] and so on; not in list order, not backwards, and not triangle k "
-                         "where order[k] is meant. Another cause: painter_order must be given the VIEW-space "
-                         "triangles, view * model_matrix * p (after the view matrix, before the projection). "
-                         "Clip-space z (after the projection) or screen z grows the other way for a perspective, so "
-                         "sorting by it puts the near faces first" +
-                             std::string(clipped_any ? ". (If the faces do overlap in the right order, look at where "
-                                                       "draw_model clips: in clip space, before the divide.)"
-                                                     : ""));
-        c.j.findings.back().hint = "order = painter_order of the VIEW-space triangles (view * model_matrix * p, before "
-                                   "the projection), then fill model.triangles[order[0]], [order[1]], ... in that order";
+        c.add("painter",
+              "TODO 11: painter_order passes its own checks (m3.painter's numbers), and so do the "
+              "matrices and the clipper, yet the picture differs where no edge is "
+              "near: the faces cover each other in another order. draw_model must fill the triangles in the "
+              "order painter_order returns: model.triangles[order[0]] first (the farthest), then "
+              "model.triangles[order[1]] and so on; not in list order, not backwards, and not triangle k "
+              "where order[k] is meant. Another cause: painter_order must be given the VIEW-space "
+              "triangles, view * model_matrix * p (after the view matrix, before the projection). "
+              "Clip-space z (after the projection) or screen z grows the other way for a perspective, so "
+              "sorting by it puts the near faces first" +
+                  std::string(clipped_any ? ". (If the faces do overlap in the right order, look at where "
+                                            "draw_model clips: in clip space, before the divide.)"
+                                          : ""),
+              "order = painter_order of the VIEW-space triangles (view * model_matrix * p, before "
+              "the projection), then fill model.triangles[order[0]], [order[1]], ... in that order");
     } else if (camera_ok && clipper_ok && clipped_any && !use_wrong && culled_ok) {
         const raster::Image& expected = c.expected;
         const auto it = art.images.find("main");

@@ -47,8 +47,20 @@ struct Ctx {
     const Values& mine;
     const Values& ref;
     cp::Judgement& j;
-    void add(const std::string& topic, const std::string& msg) { cp::add_finding(j, topic, msg); }
+    // With a hint of its own (shown instead of the scene's), set only when the finding is new.
+    void add(const std::string& topic, const std::string& msg, const std::string& hint = "") {
+        cp::add_finding(j, topic, msg, hint);
+    }
+    // Moves the last finding ahead of the others: it says why the picture differs, which the
+    // picture's own finding does not.
+    void lead() {
+        if (!j.findings.empty()) std::rotate(j.findings.begin(), j.findings.end() - 1, j.findings.end());
+    }
 };
+
+// judge_picture's finding that the picture differs beyond the tolerance, which names no cause:
+// a finding that says why goes ahead of it, or replaces it.
+bool only_says_picture_differs(const cp::Finding& f) { return f.message.rfind("the picture differs", 0) == 0; }
 
 // ---- the pinned rules, recomputed here ----
 
@@ -328,12 +340,14 @@ void judge_group(Group g, Ctx& c) {
                 std::string list;
                 for (std::size_t f : failing) list += (list.empty() ? "" : ", ") + std::to_string(f);
                 const auto& k = cases[i];
-                c.add("lambert", "TODO 5a: shade() case " + std::to_string(i) + " gave " + str(vec3(v, "shade" + std::to_string(i))) +
-                                     " levels, expected " + str(lambert(k.ambient, k.lights, k.base, k.position, k.normal)) +
-                                     ": exactly B * ambient = " + str(ambient_of(i)) + " too much, as in every failing case (" +
-                                     list + "): the ambient term is added twice. B * (ambient + sum of I * max(0, N . L)) "
-                                     "counts the ambient once, whatever the lights");
-                if (!c.j.findings.empty()) c.j.findings.back().hint = "add the ambient term once: B * (ambient + sum of the lights' I * max(0, N . L))";
+                c.add("lambert",
+                      "TODO 5a: shade() case " + std::to_string(i) + " gave " +
+                          str(vec3(v, "shade" + std::to_string(i))) + " levels, expected " +
+                          str(lambert(k.ambient, k.lights, k.base, k.position, k.normal)) + ": exactly B * ambient = " +
+                          str(ambient_of(i)) + " too much, as in every failing case (" + list +
+                          "): the ambient term is added twice. B * (ambient + sum of I * max(0, N . L)) "
+                          "counts the ambient once, whatever the lights",
+                      "add the ambient term once: B * (ambient + sum of the lights' I * max(0, N . L))");
             }
             std::string also;  // the other failing cases the reversal explains
             for (std::size_t i : failing) {
@@ -834,11 +848,13 @@ void judge_screen_weights(Ctx& c, const raster::Image& mine, const cp::Artifacts
         screen_weighted.cast(mine.at(panel.x0 + x, panel.y0 + y), pc, sc);
     });
     if (screen_weighted.names_mistake()) {
-        c.add("perspective", "TODO 8: " + screen_weighted.tally() + " inside the first triangle your colors are the SCREEN-weighted ones: weigh "
-                                 "each vertex by l_i / w_i and normalize (perspective_weights) unless "
-                                 "needs.perspective_correct is false");
-        if (!c.j.findings.empty()) c.j.findings.back().hint = "fill_triangle weighs every attribute with perspective_weights(l, w): l_i / w_i, "
-                                   "normalized, unless needs.perspective_correct is false";
+        c.add("perspective",
+              "TODO 8: " + screen_weighted.tally() +
+                  " inside the first triangle your colors are the SCREEN-weighted ones: weigh "
+                  "each vertex by l_i / w_i and normalize (perspective_weights) unless "
+                  "needs.perspective_correct is false",
+              "fill_triangle weighs every attribute with perspective_weights(l, w): l_i / w_i, "
+              "normalized, unless needs.perspective_correct is false");
     }
 }
 
@@ -975,12 +991,10 @@ void judge_normal_space(Ctx& c, const raster::Image& mine, const Panel& p, const
         c.add("debug view", "TODO 9: " + view_space.tally() + " of the ball" + where +
                                 " your normal colors are those of VIEW-space normals (normal_matrix(view * model)): "
                                 "kNormalView shows the WORLD-space normal, the one draw_mesh gives every vertex "
-                                "through normal_matrix(model) in step 1, whatever the camera");
-        if (!c.j.findings.empty()) {
-            c.j.findings.back().hint = "normals must be in world space: draw_mesh (TODO 9) sends them through "
-                                       "normal_matrix(model), never through the view matrix";
-            std::rotate(c.j.findings.begin(), c.j.findings.end() - 1, c.j.findings.end());  // before the picture's
-        }
+                                "through normal_matrix(model) in step 1, whatever the camera",
+              "normals must be in world space: draw_mesh (TODO 9) sends them through "
+              "normal_matrix(model), never through the view matrix");
+        c.lead();
     }
 }
 
@@ -1016,13 +1030,10 @@ void judge_ties(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, con
                                       "brighter, yours kept triangle " + std::to_string(i + 1) + "'s: an exact tie "
                                       "never reached depth_passes. Skip a fragment only when its key is FARTHER "
                                       "(key > stored); a tie (key == stored) gets its color and goes to depth_passes, "
-                                      "which gives it to the brighter color");
-                if (!c.j.findings.empty()) {
-                    c.j.findings.back().hint = "an exact tie of keys must reach depth_passes (TODO 2's rule: the "
-                                               "brighter color wins); only a farther key may be rejected early";
-                    // The picture's finding would send the student to the rasterizer in general: this says why.
-                    std::rotate(c.j.findings.begin(), c.j.findings.end() - 1, c.j.findings.end());
-                }
+                                      "which gives it to the brighter color",
+                      "an exact tie of keys must reach depth_passes (TODO 2's rule: the "
+                      "brighter color wins); only a farther key may be rejected early");
+                c.lead();
                 return;
             }
         }
@@ -1050,12 +1061,10 @@ void judge_extreme_w(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref
                                    " pixels inside the triangle with a vertex of w = 1e-320 your colors are not the "
                                    "screen-weighted ones: 1 / w overflows there, so sum(l_i / w_i) is infinite, and "
                                    "fill_triangle must then fall back to the screen weights l (and w = sum(l_i * w_i)), "
-                                   "as perspective_weights does, instead of dividing by the infinite sum (NaN)");
-            if (!c.j.findings.empty()) {
-                c.j.findings.back().hint = "in fill_triangle, where sum(l_i / w_i) is not > 0 or not finite, use the "
-                                           "screen weights l (the header's extreme-w rule)";
-                std::rotate(c.j.findings.begin(), c.j.findings.end() - 1, c.j.findings.end());  // before the picture's
-            }
+                                   "as perspective_weights does, instead of dividing by the infinite sum (NaN)",
+                  "in fill_triangle, where sum(l_i / w_i) is not > 0 or not finite, use the "
+                  "screen weights l (the header's extreme-w rule)");
+            c.lead();
             return;
         }
     }
@@ -1205,7 +1214,7 @@ std::optional<cp::Finding> fill_triangle_fails_on(const cp::Artifacts& art, cons
     // rule) before a count, and a count before "the picture differs".
     auto rank = [](const cp::Finding& f) {
         if (names_the_idea(f)) return 0;
-        return f.message.rfind("the picture differs", 0) == 0 ? 2 : 1;
+        return only_says_picture_differs(f) ? 2 : 1;
     };
     const cp::Finding* best = &scratch.findings.front();
     for (const cp::Finding& f : scratch.findings) {
@@ -1436,16 +1445,15 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             }
             if (name == "triangles_drawn" && a > b && non_finite > 0 && clipped &&
                 get(c.mine, key + ".stats.triangles_clipped") == get(c.ref, key + ".stats.triangles_clipped")) {
-                c.add("clipping", "TODO 7b: " + num(a) + " fan triangles drawn" + where + ", expected " + num(b) +
-                                      ", with as many triangles clipped: the polygons of the huge triangles kept "
-                                      "vertices with w <= 0. Rounding between two huge vertices can cancel every digit "
-                                      "and leave (0, 0, 0, 0), which lies on all six planes; clip_triangle drops every "
-                                      "vertex whose w is not > 0 once the six planes are done, and returns nothing when "
-                                      "fewer than three remain");
-                if (!c.j.findings.empty()) {
-                    c.j.findings.back().hint = "after the six planes, clip_triangle drops every vertex whose w is not > 0 "
-                                               "(it has no place on the screen)";
-                }
+                c.add("clipping",
+                      "TODO 7b: " + num(a) + " fan triangles drawn" + where + ", expected " + num(b) +
+                          ", with as many triangles clipped: the polygons of the huge triangles kept "
+                          "vertices with w <= 0. Rounding between two huge vertices can cancel every digit "
+                          "and leave (0, 0, 0, 0), which lies on all six planes; clip_triangle drops every "
+                          "vertex whose w is not > 0 once the six planes are done, and returns nothing when "
+                          "fewer than three remain",
+                      "after the six planes, clip_triangle drops every vertex whose w is not > 0 "
+                      "(it has no place on the screen)");
                 continue;
             }
             std::string why;
@@ -1469,28 +1477,25 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                                "interpolates 6. This panel has a point light, whose L depends on where "
                                                "the fragment is: draw_mesh sets FillState::point_light when any light "
                                                "is a point light, so that fill_triangle interpolates the world position "
-                                               "too and shade() gets it");
-                if (!c.j.findings.empty()) {
-                    c.j.findings.back().hint = "with a point light, draw_mesh (TODO 9) sets FillState::point_light so "
-                                               "that fill_triangle interpolates the world position for shade()";
-                    // It says why the picture differs: before the picture's finding, which names no cause.
-                    if (keep == std::string::npos && c.j.findings.front().message.rfind("the picture differs", 0) == 0) {
-                        std::rotate(c.j.findings.begin(), c.j.findings.end() - 1, c.j.findings.end());
-                    }
+                                               "too and shade() gets it",
+                      "with a point light, draw_mesh (TODO 9) sets FillState::point_light so "
+                      "that fill_triangle interpolates the world position for shade()");
+                // It says why the picture differs: before the picture's finding, which names no cause.
+                if (keep == std::string::npos && only_says_picture_differs(c.j.findings.front())) {
+                    c.lead();
                 }
                 continue;
             } else if ((name == "shade_calls" || name == "interpolated") && ties_skipped) {
                 if (name == "interpolated") continue;  // the shade() count's finding says it
-                c.add("tie rule", "TODO 8: " + num(a) + " calls of shade()" + where + ", expected about " + num(b) +
-                                      ": yours lit exactly the fragments whose key was written (" + num(mine_writes) +
-                                      "), while the reference also lights the " + num(b - ref_writes) +
-                                      " fragments whose key TIES the stored one: an exact tie goes to depth_passes, "
-                                      "which gives it to the brighter color, so its color is needed. Skip a fragment "
-                                      "only when its key is FARTHER (key > stored)");
-                if (!c.j.findings.empty()) {
-                    c.j.findings.back().hint = "a tie (key == stored) is not rejected before depth_passes: light it and "
-                                               "let depth_passes decide";
-                }
+                c.add("tie rule",
+                      "TODO 8: " + num(a) + " calls of shade()" + where + ", expected about " + num(b) +
+                          ": yours lit exactly the fragments whose key was written (" + num(mine_writes) +
+                          "), while the reference also lights the " + num(b - ref_writes) +
+                          " fragments whose key TIES the stored one: an exact tie goes to depth_passes, "
+                          "which gives it to the brighter color, so its color is needed. Skip a fragment "
+                          "only when its key is FARTHER (key > stored)",
+                      "a tie (key == stored) is not rejected before depth_passes: light it and "
+                      "let depth_passes decide");
                 continue;
             } else if (name == "interpolated" && world_needless) {
                 why = ": that is " + num(std::round(a / mine_shade * 100) / 100) + " values per fragment lit (per call of "
@@ -1625,7 +1630,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             judge_normal_space(c, *mine, panel, where);
             // Normals in the wrong space explain the picture: the finding that names no cause goes.
             if (c.j.findings.size() > before) {
-                std::erase_if(c.j.findings, [](const cp::Finding& f) { return f.message.rfind("the picture differs", 0) == 0; });
+                std::erase_if(c.j.findings, only_says_picture_differs);
             }
         }
         if (!panel.screen_tris.empty()) judge_extreme_w(c, *mine, ref, panel);
