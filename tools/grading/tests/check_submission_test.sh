@@ -126,4 +126,10 @@ attack mprotect 'memory mapping' '#include <sys/mman.h>
 int sneaky(void* p) { return mprotect(p, 4096, 7); }'
 attack png 'file access' '#include "raster/io.h"
 void sneaky(const raster::Image& img) { raster::write_png("x.png", img); }'
+# A header beside the source with a % in its name is still the student's own: its lines are
+# checked like the source's (the grader takes only the rubric's files; check-submission does not
+# rely on that). The header is put where try() compiles the source.
+mkdir -p "$work/a-percent"
+printf '%s\n' 'long sneaky() { long r; asm volatile("syscall" : "=a"(r) : "a"(39)); return r; }' >"$work/a-percent/a%b.h"
+attack percent 'inline assembly' '#include "a%b.h"'
 echo "ok"
