@@ -627,10 +627,11 @@ std::vector<Scene> build() {
                           "a triangle without a face color (past the end of face_colors, or none at all) is drawn "
                           "white",
                           {9, 8}, 96, 96);
-        // A hexagon of six triangles with four face colors, and a quad with none. The hexagon's
-        // second triangle (face 1) lies far outside the view: wholly clipped, it draws nothing,
-        // yet it owns face color 1, so the faces after it keep their own indices (a count of
-        // the faces drawn so far would shift every later color by one).
+        // A hexagon of six triangles with six face colors for its eight faces, and a quad with
+        // none. Face 1 lies far outside the view: wholly clipped, it draws nothing, yet it owns
+        // face color 1. Face 4 faces away, behind the hexagon (culled; drawn, it would be
+        // hidden): it owns face color 4. So the faces after each keep their own indices; a count
+        // of the faces drawn so far, or of those not culled, shifts the later colors.
         Mesh hexagon;
         hexagon.positions.push_back({-0.5, 0.2, 0});
         for (int k = 0; k < 6; ++k) {
@@ -640,14 +641,19 @@ std::vector<Scene> build() {
         hexagon.positions.push_back({-40, -1, 0});
         hexagon.positions.push_back({-38, -1, 0});
         hexagon.positions.push_back({-39, 1, 0});
+        hexagon.positions.push_back({-0.9, -0.1, -0.3});  // clockwise on the screen: a back face
+        hexagon.positions.push_back({-0.5, 0.6, -0.3});
+        hexagon.positions.push_back({-0.1, -0.1, -0.3});
         for (int k = 0; k < 6; ++k) {
             hexagon.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
             if (k == 0) hexagon.triangles.push_back({7, 8, 9});
+            if (k == 2) hexagon.triangles.push_back({10, 11, 12});
         }
-        hexagon.face_colors = {kRed, kYellow, kGreen, kBlue};
+        hexagon.face_colors = {kRed, kYellow, kGreen, kBlue, Color{200, 90, 210}, Color{240, 130, 40}};
         Mesh quad = quad_mesh({0.6, -1.6, -0.5}, {1.7, -1.5, -0.5}, {1.6, -0.4, -0.5}, {0.5, -0.5, -0.5}, kRed);
         quad.face_colors.clear();
         Panel pn = panel(cam({0.02, 0.03, 4.5}), {item(hexagon), item(quad)}, 0, 0, 96, 96, Shade::kFaceColor);
+        pn.cull = true;
         s.panels.push_back(pn);
         add(s);
     }
