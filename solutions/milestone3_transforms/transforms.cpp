@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <utility>
 
@@ -480,7 +481,10 @@ std::vector<int> painter_order(const std::vector<std::array<Vec3, 3>>& view_tria
     std::vector<double> key(view_triangles.size());
     for (std::size_t i = 0; i < view_triangles.size(); ++i) {
         const auto& t = view_triangles[i];
-        key[i] = (t[0].z + t[1].z + t[2].z) / 3;
+        const double mean = (t[0].z + t[1].z + t[2].z) / 3;
+        // A NaN mean (a vertex not finite) sorts as the farthest: with NaN keys, < would not be
+        // a strict weak order, and sorting with it is undefined behaviour.
+        key[i] = std::isnan(mean) ? -std::numeric_limits<double>::infinity() : mean;
         order.push_back(static_cast<int>(i));
     }
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });

@@ -179,8 +179,9 @@ inline std::tuple<double, double, double, double, double, double> orthographic_a
 }
 
 // Fails the input with a message (a broken promise of a header).
-[[noreturn]] inline void broken(const char* what) {
-    std::fprintf(stderr, "fuzz: broken promise: %s\n", what);
+// what: the promise broken; hint: which TODO, and the header's rule to reread.
+[[noreturn]] inline void broken(const char* what, const char* hint) {
+    std::fprintf(stderr, "fuzz: broken promise: %s\n  look at: %s\n", what, hint);
     std::abort();
 }
 

@@ -20,7 +20,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 const m1::Rect r{in.real(), in.real(), in.real(), in.real()};
                 raster::Vec2 a = in.vec2(), b = in.vec2();
                 const bool finite = std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(b.x) && std::isfinite(b.y);
-                if (m1::clip_line(a, b, r) && !finite) fuzz::broken("m1::clip_line accepted a non-finite end");
+                if (m1::clip_line(a, b, r) && !finite) fuzz::broken("m1::clip_line accepted a non-finite end",
+                                 "TODO 2 (lines.h): non-finite input returns false; test the ends before any "
+                                 "arithmetic with them");
                 break;
             }
             case 2: {

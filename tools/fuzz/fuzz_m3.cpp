@@ -90,27 +90,39 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             (void)m3::transform_direction(a, in.vec3());
             (void)m3::rigid_inverse(a);
             Mat4 inv;
-            if (m3::inverse(a, inv) && (!finite(a) || has_nan(inv))) fuzz::broken("m3::inverse returned true with NaN");
+            if (m3::inverse(a, inv) && (!finite(a) || has_nan(inv))) fuzz::broken("m3::inverse returned true with NaN",
+                             "TODO 3a (transforms.h): false for a matrix with an entry that is NaN or infinite, "
+                             "and for one whose inverse is not finite (check the result before writing out)");
             break;
         }
         case 1: {
             const Vec3 eye = in.vec3(), target = in.flag() ? eye + in.vec3() * 1e-160 : in.vec3(), up = in.vec3();
             const Mat4 v = m3::look_at(eye, target, up);
-            if (has_nan(v)) fuzz::broken("m3::look_at returned NaN");
+            if (has_nan(v)) fuzz::broken("m3::look_at returned NaN",
+                                  "TODO 4 (transforms.h, fallbacks): a non-finite eye gives the zero matrix, "
+                                  "eye == target gives f = (0, 0, -1), and an up that is zero, not finite or "
+                                  "parallel to f is replaced by a world axis");
             if (raster::is_finite(eye)) {
                 // The rotation rows have length 1 (the fallbacks included).
                 for (int r = 0; r < 3; ++r) {
                     const double len = std::sqrt(v.m[r][0] * v.m[r][0] + v.m[r][1] * v.m[r][1] + v.m[r][2] * v.m[r][2]);
-                    if (!(std::abs(len - 1) < 1e-6)) fuzz::broken("m3::look_at: a row of the rotation is not a unit vector");
+                    if (!(std::abs(len - 1) < 1e-6)) fuzz::broken("m3::look_at: a row of the rotation is not a unit vector",
+                                     "TODO 4 (transforms.h, fallbacks): a vector whose length overflows or whose "
+                                     "square underflows is scaled by a power of two before it is normalized, so "
+                                     "no direction is lost (the reference's unit() does it)");
                 }
             }
             break;
         }
         case 2: {
             if (!finite(std::apply(m3::perspective, fuzz::perspective_args(in))))
-                fuzz::broken("m3::perspective holds an entry that is not finite");
+                fuzz::broken("m3::perspective holds an entry that is not finite",
+                             "TODO 5 (transforms.h): invalid arguments, and arguments that would put an infinite "
+                             "entry in the matrix, give the zero matrix");
             if (!finite(std::apply(m3::orthographic, fuzz::orthographic_args(in))))
-                fuzz::broken("m3::orthographic holds an entry that is not finite");
+                fuzz::broken("m3::orthographic holds an entry that is not finite",
+                             "TODO 5 (transforms.h): invalid arguments, and arguments that would put an infinite "
+                             "entry in the matrix (a tiny range), give the zero matrix");
             (void)std::apply(m3::rotate, std::tuple{in.vec3(), in.real()});
             (void)m3::rotate_x(in.real());
             (void)m3::rotate_z(in.real());
@@ -124,12 +136,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 all_finite &= finite(p);
             }
             for (const Vec4& p : m3::clip_polygon(poly)) {
-                if (all_finite && !finite(p)) fuzz::broken("m3::clip_polygon made a non-finite vertex of finite ones");
+                if (all_finite && !finite(p)) fuzz::broken("m3::clip_polygon made a non-finite vertex of finite ones",
+                                                   "TODO 7a (lesson 3, clipping): interpolate a crossing from "
+                                                   "the inside end, with t = d_in / (d_in - d_out), so that "
+                                                   "coordinates near 1e308 never overflow");
             }
             Vec4 a = in.vec4(), b = in.vec4();
             const bool ends_finite = finite(a) && finite(b);
             if (m3::clip_line(a, b) && ends_finite && !(finite(a) && finite(b)))
-                fuzz::broken("m3::clip_line made a non-finite end of finite ones");
+                fuzz::broken("m3::clip_line made a non-finite end of finite ones",
+                             "TODO 7b (lesson 3, clipping): compute the new ends from the inside end, as in "
+                             "clip_polygon, so that coordinates near 1e308 never overflow");
             break;
         }
         case 4: {
@@ -141,9 +158,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             for (auto& t : tris) t = {in.vec3(), in.vec3(), in.vec3()};
             const std::vector<int> order = m3::painter_order(tris);
             std::vector<bool> seen(tris.size());
-            if (order.size() != tris.size()) fuzz::broken("m3::painter_order is not a permutation");
+            // A NaN mean makes a < b no strict weak order: std::sort may then run past the vector
+            // or repeat elements.
+            const char* hint =
+                "TODO 10 (transforms.h): a permutation of 0 .. n-1, whatever the coordinates; a NaN mean z "
+                "needs a place of its own in the order (the reference sorts it as the farthest)";
+            if (order.size() != tris.size()) fuzz::broken("m3::painter_order is not a permutation", hint);
             for (int i : order) {
-                if (i < 0 || i >= static_cast<int>(tris.size()) || seen[i]) fuzz::broken("m3::painter_order is not a permutation");
+                if (i < 0 || i >= static_cast<int>(tris.size()) || seen[i])
+                    fuzz::broken("m3::painter_order is not a permutation", hint);
                 seen[i] = true;
             }
             break;

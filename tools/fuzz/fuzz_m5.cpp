@@ -42,9 +42,9 @@ m5::Texture texture(fuzz::Input& in) {
     return t;
 }
 
-void check_sample(Vec3 s, const char* what) {
+void check_sample(Vec3 s, const char* what, const char* hint) {
     for (double c : {s.x, s.y, s.z}) {
-        if (!(c >= -1e-9 && c <= 255 + 1e-9)) fuzz::broken(what);
+        if (!(c >= -1e-9 && c <= 255 + 1e-9)) fuzz::broken(what, hint);
     }
 }
 
@@ -54,27 +54,42 @@ void textures(fuzz::Input& in) {
     const m5::Wrap mode = kWraps[in.byte() % 3];
     const double wrapped = m5::wrap_index(std::isfinite(i) ? std::floor(i) : i, n, mode);
     if (!(wrapped >= 0 && wrapped <= n - 1 && wrapped == std::floor(wrapped)))
-        fuzz::broken("m5::wrap_index: outside [0, n - 1] or not a whole number");
+        fuzz::broken("m5::wrap_index: outside [0, n - 1] or not a whole number",
+                     "TODO 1 (textures_shadows.h): wrap_index puts any finite whole-number index into "
+                     "0 .. n - 1 by its mode, and a non-finite one at 0");
 
     m5::Texture t = texture(in);
     // A copy: sample() may build the pyramid, and growing t.levels moves level 0.
     const m5::Level base = t.levels[0];
     const double fi = in.real(), fj = in.real();
     if (std::isfinite(fi) && std::isfinite(fj))
-        check_sample(m5::fetch(base, std::floor(fi), std::floor(fj), t.wrap_u, t.wrap_v), "m5::fetch out of range");
+        check_sample(m5::fetch(base, std::floor(fi), std::floor(fj), t.wrap_u, t.wrap_v), "m5::fetch out of range",
+                     "TODO 1 (textures_shadows.h): fetch wraps each index with wrap_index, and a level with "
+                     "no texels gives black");
     for (int k = 0; k < 4 && !in.empty(); ++k) {
         const Vec2 uv = in.vec2();
-        check_sample(m5::sample_nearest(base, uv, t.wrap_u, t.wrap_v), "m5::sample_nearest: NaN or out of range");
-        check_sample(m5::sample_bilinear(base, uv, t.wrap_u, t.wrap_v), "m5::sample_bilinear: NaN or out of range");
+        check_sample(m5::sample_nearest(base, uv, t.wrap_u, t.wrap_v), "m5::sample_nearest: NaN or out of range",
+                     "TODO 2 (textures_shadows.h): a NaN or infinite uv samples black, and every texel "
+                     "read is wrapped, so a sample is a texel, within 0 .. 255");
+        check_sample(m5::sample_bilinear(base, uv, t.wrap_u, t.wrap_v), "m5::sample_bilinear: NaN or out of range",
+                     "TODO 2 (textures_shadows.h): a NaN or infinite uv samples black; otherwise the four "
+                     "texels read are wrapped and their weights lie in [0, 1] and sum to 1");
         long long builds = 0;
         const double lambda = in.real();
-        check_sample(m5::sample(t, uv, lambda, kFilters[in.byte() % 4], &builds), "m5::sample: NaN or out of range");
-        if (builds > 1) fuzz::broken("m5::sample built the pyramid twice");
+        check_sample(m5::sample(t, uv, lambda, kFilters[in.byte() % 4], &builds), "m5::sample: NaN or out of range",
+                     "TODO 4 (textures_shadows.h, Filters): the level read is clamped to the pyramid, and a "
+                     "NaN or infinite uv gives black");
+        if (builds > 1)
+            fuzz::broken("m5::sample built the pyramid twice",
+                         "TODO 4 (textures_shadows.h): sample builds the mipmaps once, only when a filter "
+                         "needs them and the texture has none yet");
     }
     m5::build_mipmaps(t);
     for (const m5::Level& level : t.levels) {
         if (level.texels.size() != static_cast<std::size_t>(level.width) * static_cast<std::size_t>(level.height))
-            fuzz::broken("m5::build_mipmaps: a level's texel count is not width * height");
+            fuzz::broken("m5::build_mipmaps: a level's texel count is not width * height",
+                         "TODO 3 (textures_shadows.h, Mipmaps): level k + 1 is max(1, floor(w / 2)) by "
+                         "max(1, floor(h / 2)) texels, and holds exactly that many");
     }
 }
 
@@ -100,7 +115,9 @@ void derivatives_and_light(fuzz::Input& in) {
     const Vec3 n = raster::normalize(in.vec3());
     const Vec3 texel = in.vec3();
     const Vec3 p = m5::perturb_normal(f, n, texel);
-    if (!f.valid && raster::is_finite(n) && !(p == n)) fuzz::broken("m5::perturb_normal changed n without a frame");
+    if (!f.valid && raster::is_finite(n) && !(p == n)) fuzz::broken("m5::perturb_normal changed n without a frame",
+                     "TODO 7 (textures_shadows.h): without a valid tangent frame, perturb_normal returns n "
+                     "unchanged");
 }
 
 m5::ShadowSettings settings(fuzz::Input& in) {
@@ -127,7 +144,9 @@ void shadows(fuzz::Input& in) {
     }
     for (int k = 0; k < 4 && !in.empty(); ++k) {
         const double f = m5::shadow_factor(map, in.vec3(), raster::normalize(in.vec3()), direction, s);
-        if (!(f >= 0 && f <= 1)) fuzz::broken("m5::shadow_factor outside [0, 1]");
+        if (!(f >= 0 && f <= 1)) fuzz::broken("m5::shadow_factor outside [0, 1]",
+                                                "TODO 8 (textures_shadows.h): 1 when lit, 0 when shadowed, the "
+                                                "lit fraction of the 3x3 texels with pcf: never outside [0, 1]");
     }
 }
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The grader's own tests (CTest label `project`): tools/grading/grade on the reference, the
-# skeleton, a compile error, every deliberate bug, and hostile submissions.
+# skeleton, a compile error, a sample of the deliberate bugs, and hostile submissions.
 #
 #   grade_test.sh <case> <build-dir> <uid>
 #
