@@ -35,8 +35,9 @@
 //  * Normals and lighting happen in WORLD space. A normal goes from model to world space by
 //    the normal matrix (the inverse transpose of the model matrix's upper-left 3x3) and is
 //    then normalized. A normal of length 0 (or not finite) stays the zero vector, and lights
-//    nothing: such a surface shows its ambient color, never NaN. (raster::normalize keeps only
-//    the zero vector zero; for an infinite or NaN length it gives NaN, so check the length.)
+//    nothing: such a surface shows its ambient color, never NaN. (raster::normalize gives zero
+//    for a zero or NaN length, but NaN for a vector with an infinite component, inf / inf: so
+//    check the length.)
 //
 //  * Lambert. For base color B (levels 0..255), ambient A and lights with intensity I_k (all
 //    per channel, 1 = full strength) and unit directions L_k from the surface TOWARD light k,
@@ -187,7 +188,9 @@ Color to_color(Vec3 levels);
 // is white, far is black.
 Color depth_gray(double z_ndc);
 // A normal as a color: each channel round(255 * (n + 1) / 2) of the NORMALIZED normal
-// (x -> red, y -> green, z -> blue); the zero normal gives (128, 128, 128).
+// (x -> red, y -> green, z -> blue); the zero normal gives (128, 128, 128), and so does a normal
+// whose length is not finite: (inf, 0, 0), and (1e200, -1e200, 0), whose length overflows (for
+// that one the color of its direction, found by scaling it down first, passes too).
 Color normal_color(Vec3 normal);
 
 // The checkerboard of the perspective checkpoints (given): kCheckerCells cells along u and

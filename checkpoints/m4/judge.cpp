@@ -453,14 +453,26 @@ void judge_group(Group g, Ctx& c) {
                 c.add("debug view", "TODO 6: depth_gray(" + num(zs[i]) + ") gave " + str(mine) + ", expected a gray of " +
                                         num(level) + " (near white, far black)");
             }
-            const Vec3 ns[] = {{0, 0, 1}, {1, 0, 0}, {0, -2, 0}, {1, 1, 1}, {0, 0, 0}};
-            for (int i = 0; i < 5; ++i) {
-                const Vec3 n = unit_or_zero(ns[i]);
-                const Vec3 want = (n + Vec3{1, 1, 1}) * 127.5;
+            // The last two have a length that is not finite: the zero vector's gray by the rule.
+            // (1e200, -1e200, 0) may also give the color of its direction (scaled down first);
+            // (inf, 0, 0) is where raster::normalize gives NaN (inf / inf).
+            const Vec3 ns[] = {{0, 0, 1}, {1, 0, 0}, {0, -2, 0}, {1, 1, 1}, {0, 0, 0}, {1e200, -1e200, 0},
+                               {std::numeric_limits<double>::infinity(), 0, 0}};
+            for (int i = 0; i < 7; ++i) {
                 const Color mine = color3(v, "ncolor" + std::to_string(i));
-                if (std::abs(mine.r - want.x) <= 1 && std::abs(mine.g - want.y) <= 1 && std::abs(mine.b - want.z) <= 1) continue;
-                c.add("debug view", "TODO 6: normal_color" + str(ns[i]) + " gave " + str(mine) + ", expected about " +
-                                        str(want) + " (of the NORMALIZED normal)");
+                auto near = [&](Vec3 n) {
+                    const Vec3 want = (n + Vec3{1, 1, 1}) * 127.5;
+                    return std::abs(mine.r - want.x) <= 1 && std::abs(mine.g - want.y) <= 1 && std::abs(mine.b - want.z) <= 1;
+                };
+                const Vec3 n = unit_or_zero(ns[i]);
+                if (near(n) || (i == 5 && near(unit_or_zero(ns[i] * 1e-200)))) continue;
+                const bool huge = !std::isfinite(raster::length(ns[i]));
+                c.add("debug view",
+                      "TODO 6: normal_color" + str(ns[i]) + " gave " + str(mine) + ", expected about " +
+                          str((n + Vec3{1, 1, 1}) * 127.5) + " (of the NORMALIZED normal)" +
+                          (huge ? "; its length is not finite, so it is the zero vector (lesson section 5), hence gray "
+                                  "(raster::normalize gives NaN for an infinite component: inf / inf)"
+                                : ""));
             }
             break;
         }

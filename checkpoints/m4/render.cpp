@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "depth_lighting.h"
 #include "m4/scenes.h"
@@ -144,8 +145,9 @@ void numbers(Group g, Values& v) {
         case Group::kDebugColors: {
             const double zs[] = {-1, 1, 0.1, 0.5, -3, 2};
             for (int i = 0; i < 6; ++i) put(v, "gray" + std::to_string(i), CALL("depth_gray", m4::depth_gray(zs[i])));
-            const Vec3 ns[] = {{0, 0, 1}, {1, 0, 0}, {0, -2, 0}, {1, 1, 1}, {0, 0, 0}};
-            for (int i = 0; i < 5; ++i) put(v, "ncolor" + std::to_string(i), CALL("normal_color", m4::normal_color(ns[i])));
+            const Vec3 ns[] = {{0, 0, 1}, {1, 0, 0}, {0, -2, 0}, {1, 1, 1}, {0, 0, 0}, {1e200, -1e200, 0},
+                               {std::numeric_limits<double>::infinity(), 0, 0}};
+            for (int i = 0; i < 7; ++i) put(v, "ncolor" + std::to_string(i), CALL("normal_color", m4::normal_color(ns[i])));
             break;
         }
         case Group::kClip: {
