@@ -182,7 +182,10 @@ Vec3 to_screen(Vec4 clip, int width, int height);
 std::vector<Vec4> clip_polygon(const std::vector<Vec4>& poly);
 // TODO 7b: the part of the segment a-b inside all six planes: false when none is, else true
 // with a and b moved onto the planes where they were outside. Huge coordinates as in
-// clip_polygon: finite ends give finite ends.
+// clip_polygon: finite ends give finite ends. That holds for a moved end too: a + (b - a) * t0,
+// taken from the outside end, can round past b near 1e308 (t0 = 1 when the segment enters a
+// plane exactly at b), and scaled back it overflows. Compute a moved end from the inside end,
+// or clamp each of its coordinates between the ends' (the reference clamps).
 bool clip_line(Vec4& a, Vec4& b);
 
 // ---- TODO 8: back-face culling, in pixel coordinates (y down), as pinned above ----

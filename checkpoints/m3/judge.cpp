@@ -538,6 +538,31 @@ void judge_nonfinite(Ctx& c) {
                   kHugeClipHint);
         }
     }
+    {
+        // inside_end_clip_case()'s first edge as a segment: a is outside x <= w only, and the
+        // segment enters that plane exactly at b, whose w is the largest double.
+        const std::array<Vec4, 3> edge = inside_end_clip_case();
+        const double ok = get(v, "c.inside_end_line.ok"), rok = get(c.ref, "c.inside_end_line.ok");
+        const Vec4 a = vec4(v, "c.inside_end_line.a"), b = vec4(v, "c.inside_end_line.b");
+        const Vec4 ra = vec4(c.ref, "c.inside_end_line.a"), rb = vec4(c.ref, "c.inside_end_line.b");
+        const double sc = scale_of({ra, rb});
+        if (ok != rok || (rok == 1 && !(same4(a, ra, sc) && same4(b, rb, sc)))) {
+            const bool finite = all_finite({a, b});
+            c.add("clipping",
+                  "TODO 7b: clip_line of " + str(edge[0]) + " - " + str(edge[1]) + " gave " +
+                      (ok == 1 ? str(a) + " - " + str(b) : std::string("nothing")) + ", expected " +
+                      (rok == 1 ? str(ra) + " - " + str(rb) : std::string("nothing")) +
+                      (ok == 1 && !finite ? ": an end is not finite" : "") +
+                      ". Only a is outside (x > w), and the segment enters the plane x = w exactly at b, "
+                      "whose w is the largest double, so the new a is b itself. Computed from the outside "
+                      "end, a + (b - a) * 1 can round one step past b, and scaled back that step overflows "
+                      "to infinity. transforms.h pins finite ends for finite ends: compute a moved end from "
+                      "the inside end (b + (a - b) * (1 - t0)), or keep each of its coordinates between "
+                      "the ends' before scaling back",
+                  "clip_line: a moved end computed from the other end can round past it near 1e308; "
+                  "compute it from the inside end, or clamp it between the ends");
+        }
+    }
 }
 
 void judge_group(Group g, Ctx& c) {

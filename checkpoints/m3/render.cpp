@@ -227,6 +227,13 @@ void numbers(Group g, Values& v) {
             put_polygon(v, "c.poly", CALL("clip_polygon", m3::clip_polygon({tri[0], tri[1], tri[2]})));
             const std::array<Vec4, 3> edge = inside_end_clip_case();
             put_polygon(v, "c.inside_end", CALL("clip_polygon", m3::clip_polygon({edge[0], edge[1], edge[2]})));
+            {
+                // The same edge as a segment: a is outside, and the line enters at b.
+                Vec4 ea = edge[0], eb = edge[1];
+                v["c.inside_end_line.ok"] = CALL("clip_line", m3::clip_line(ea, eb));
+                put(v, "c.inside_end_line.a", ea);
+                put(v, "c.inside_end_line.b", eb);
+            }
             Vec4 a = seg[0], b = seg[1];
             v["c.line.ok"] = CALL("clip_line", m3::clip_line(a, b));
             put(v, "c.line.a", a);
