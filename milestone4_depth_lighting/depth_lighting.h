@@ -175,7 +175,9 @@ struct Lighting {
     std::vector<Light> lights;
 };
 // Lambert with ambient, in levels, unclamped and unrounded (see above). `normal` need not
-// have length 1 (normalize it; zero stays zero). A zero light vector (a directional light of
+// have length 1 (normalize it; zero stays zero). A normal whose length is not finite, e.g.
+// (inf, 0, 0), counts as the zero normal, as in normal_color: ambient only (raster::normalize
+// would make it NaN: inf / inf). A zero light vector (a directional light of
 // direction 0, a point light at `position`) lights nothing. A light with max(0, dot(N, L)) = 0
 // adds nothing at all, whatever its intensity: a zero normal under an infinite light gives
 // the ambient color, never NaN (infinity * 0).

@@ -21,6 +21,10 @@
 //   says: the concept tag the failing checkpoint must name
 //   lesson: (optional) the lesson section to reread, as text of its heading ("TODO 3: Bresenham")
 //   fix: (optional) one sentence: what the right code does
+//   blames: (optional) "TODO <n>: <concept>[, ...]": every finding of every checkpoint it fails
+//       names that TODO and one of those concepts (bug_tool blames)
+//   grading: (optional) "always": the grader's test grades this bug whatever its sample
+//       (tools/grading/tests/grade_test.sh, bugs-mN): a path of the grader that only it takes
 //   (summary, lesson and fix feed the known-bug diagnosis and the lesson's troubleshooting
 //   gallery: see checkpoints/harness/diagnosis.h and checkpoints/bug_tool.cpp)
 //   @@ find

@@ -300,11 +300,16 @@ void judge_group(Group g, Ctx& c) {
                     failing.push_back(i);
                 }
             }
+            // A normal whose length is not finite is the zero normal by the header's rule: its
+            // case has a finding of its own, and does not count here either way.
+            auto infinite_normal = [&](std::size_t i) { return !std::isfinite(raster::length(cases[i].normal)); };
             auto non_unit = [&](std::size_t i) {
                 const double len = raster::length(cases[i].normal);
-                return len > 0 && std::abs(len - 1) > 1e-9;
+                return len > 0 && std::isfinite(len) && std::abs(len - 1) > 1e-9;
             };
-            const bool only_non_unit = !failing.empty() && std::all_of(failing.begin(), failing.end(), non_unit);
+            const bool only_non_unit =
+                std::any_of(failing.begin(), failing.end(), non_unit) &&
+                std::all_of(failing.begin(), failing.end(), [&](std::size_t i) { return non_unit(i) || infinite_normal(i); });
             // Every failing case is exactly what the right formula gives with every directional
             // light reversed, and so is case 0 or 1 (one light, straight on or from behind): L
             // is the light's travel direction. That finding explains the rest (a light behind
@@ -362,7 +367,16 @@ void judge_group(Group g, Ctx& c) {
                 const Vec3 ambient_only{k.base.r * k.ambient.x, k.base.g * k.ambient.y, k.base.b * k.ambient.z};
                 std::string topic = "lambert", why;
                 const bool all_zero = same3(mine, Vec3{}, 0);
-                if (only_non_unit) {
+                if (infinite_normal(i)) {
+                    topic = "zero normal";
+                    why = std::string(": the normal has an infinite component, so its length is not finite, and "
+                                      "depth_lighting.h counts such a normal as the zero normal: ambient only, as "
+                                      "normal_color gives it the zero normal's gray") +
+                          (std::isnan(mine.x) || std::isnan(mine.y) || std::isnan(mine.z)
+                               ? ". Yours is NaN: divided by its length, inf / inf is NaN (raster::normalize does "
+                                 "that); test std::isfinite(length) before dividing"
+                               : "");
+                } else if (only_non_unit) {
                     why = ": its normal is not of unit length (its length is " + num(raster::length(k.normal)) +
                           "), like that of every failing case, and every case with a unit normal passes: normalize N "
                           "inside shade() before the dot products, whether it is longer or shorter than 1 "

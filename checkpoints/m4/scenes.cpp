@@ -828,6 +828,9 @@ std::vector<LambertCase> lambert_cases() {
         // an infinite light exactly along the surface (N . L = 0): it adds nothing, never NaN
         {{0.1, 0.1, 0.1}, {directional({0, 0, -1}, {0.5, 0.5, 0.5}), directional({1, 0, 0}, {kInf, kInf, kInf})}, base,
          {0, 0, 0}, {0, 0, 1}},
+        // a normal with an infinite component: its length is not finite, so it is the zero
+        // normal (ambient only), though the light shines along +x; normalized, it is NaN
+        {{0.1, 0.1, 0.1}, {directional({-1, 0, 0}, {1, 1, 1})}, base, {0, 0, 0}, {kInf, 0, 0}},
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m4.lambert");

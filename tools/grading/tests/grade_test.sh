@@ -164,21 +164,23 @@ PY
     # ... fails"); here the question is whether the grader turns a failing checkpoint into lost
     # points. So a fixed sample, which does not grow with the bug library: bugs chosen (greedily,
     # most new checkpoints first, then by name) until every checkpoint some bug names is named by
-    # a chosen one, plus the bugs whose renders never end (the watchdog's path) or whose only
-    # sign is advice (no_clipping).
+    # a chosen one, plus the bugs marked "grading: always" (renders that never end, the
+    # watchdog's path; a sign that is only advice).
     m=${case_name#bugs-}
     mapfile -t sample < <(python3 - "$root/checkpoints/$m/bugs" <<'PY'
 import glob, os, sys
-bugs = {}
+bugs, special = {}, set()
 for f in sorted(glob.glob(os.path.join(sys.argv[1], "*.bug"))):
-    names = [l.split(":", 1)[1].split() for l in open(f) if l.startswith("must_fail:")]
+    head = open(f).read().split("\n@@", 1)[0].splitlines()
+    names = [l.split(":", 1)[1].split() for l in head if l.startswith("must_fail:")]
     bugs[os.path.basename(f)[:-4]] = set(names[0]) if names else set()
+    if any(l.split(":", 1)[1].split()[:1] == ["always"] for l in head if l.startswith("grading:")):
+        special.add(os.path.basename(f)[:-4])
 left, chosen = set().union(*bugs.values()), []
 while left:
     best = max(sorted(bugs), key=lambda b: len(bugs[b] & left))
     chosen.append(best)
     left -= bugs[best]
-special = {"no_clipping", "nan_endless_clip", "unclamped_box_endless"}
 chosen += sorted(b for b in bugs if b in special and b not in chosen)
 print("\n".join(chosen))
 PY
