@@ -96,14 +96,16 @@
 //    computed only for mip filters, a normal map is read only where a material has one, the
 //    shadow pass runs (and its map is allocated) only for a light that casts shadows, and
 //    shadows are looked up only where c > 0. A fragment hidden behind a nearer one is not
-//    shaded (as in milestone 4). Three counts are LEFT FREE, and both answers pass each:
+//    shaded (as in milestone 4). Four counts are LEFT FREE, and both answers pass each:
 //    (a) where lambda > 0 but only level 0 is read (a 1x1 texture, whose pyramid is itself, or
 //    kNearestMip with lambda < 0.5), building the pyramid (and counting it) or not;
 //    (b) where a triangle's tangent frame is not valid, reading the normal map (and counting it)
 //    or not: perturb_normal does not use the texel there;
 //    (c) where uv is NaN or infinite, building the pyramid or not: lambda there comes out NaN
 //    or infinite depending only on how rho is written (std::max's argument order, std::hypot),
-//    and the sample is black either way.
+//    and the sample is black either way;
+//    (d) for a mip-filtered material whose texture is 1x1, computing the level of detail (and
+//    counting it) or not: every lambda reads its only level.
 //    None changes a pixel, and each has two natural codes (test lambda > 0, or the level to
 //    read; read the map and let perturb_normal ignore it, or skip the read), so the
 //    checkpoints accept both.
@@ -217,7 +219,9 @@ enum class Filter { kNearest, kBilinear, kNearestMip, kTrilinear };
 // (build_mipmaps) and then adds 1 to *mipmap_builds (when not null). Nothing is built for
 // lambda <= 0 (or NaN) or for kNearest and kBilinear. With lambda > 0 but only level 0 read (a
 // 1x1 texture; kNearestMip with lambda < 0.5) building is allowed, not required (see Only what
-// a scene needs above).
+// a scene needs above). A texture whose level 0 has no texels samples black, and however often
+// it is sampled counts at most one build (build_mipmaps leaves it as it is; the reference counts
+// none).
 Vec3 sample(Texture& texture, Vec2 uv, double lambda, Filter filter, long long* mipmap_builds);
 
 // ---- TODO 6: Blinn-Phong ----
@@ -319,7 +323,7 @@ struct Stats {
     long long texture_samples = 0;     // calls of sample() for base colors
     long long lod_computed = 0;        // level-of-detail computations (mip filters only)
     long long mipmap_builds = 0;       // pyramids built (at most one per texture; see above)
-    long long normal_map_samples = 0;  // normal-map texels read (where the frame is not valid: free)
+    long long normal_map_samples = 0;  // normal-map reads: one per fragment, not per texel (free where no valid frame)
     long long tangent_frames = 0;      // tangent_frame() calls (one per mesh triangle with a normal map)
     long long specular_terms = 0;      // blinn_phong() calls with a nonzero specular color (where c > 0 only)
     long long shadow_lookups = 0;      // shadow_factor() calls

@@ -174,6 +174,16 @@ void numbers(Group g, Values& v) {
             m5::Texture fresh;
             fresh.levels.push_back(to_level(bases[0]));
             put(v, "filter.null", CALL("sample", m5::sample(fresh, {0.3, 0.7}, 1.5, m5::Filter::kTrilinear, nullptr)));
+            // A texture with no texels, sampled twice by a mip filter: black, and at most one
+            // pyramid counted (there is nothing to build).
+            m5::Texture empty;
+            empty.levels.push_back(m5::Level{});
+            long long empty_builds = 0;
+            for (int k = 0; k < 2; ++k) {
+                put(v, "filter.empty" + std::to_string(k),
+                    CALL("sample", m5::sample(empty, {0.3, 0.7}, 1.5, m5::Filter::kTrilinear, &empty_builds)));
+            }
+            v["filter.empty.builds"] = double(empty_builds);
             break;
         }
         case Group::kBlinnPhong: {
@@ -227,7 +237,7 @@ void numbers(Group g, Values& v) {
                 m5::ShadowSettings settings;
                 settings.resolution = tiny.resolution;
                 settings.center = tiny.center;
-                settings.radius = tiny.radius;
+                settings.radius = c.settings_radius > 0 ? c.settings_radius : tiny.radius;
                 settings.constant_bias = c.constant_bias;
                 settings.slope_bias = c.slope_bias;
                 settings.pcf = c.pcf;

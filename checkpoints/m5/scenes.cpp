@@ -1297,6 +1297,10 @@ std::vector<ShadowCase> shadow_cases() {
         // d - bias / (2r) = 0.5 exactly, and so is d > stored + bias / (2r) (every number is a
         // short binary fraction): lit, whichever side the bias is written on.
         {{-1.5, -0.25, -1.5}, up, 0.25, 0, false},
+        // Case 20 with settings of radius 1 beside the map of radius 2: the bias is converted
+        // with the map's radius (0.02 / 4 in depth, less than the 0.03 / 4 the point lies below:
+        // shadowed); with the settings' it would be twice as large and keep the point lit.
+        {{1.5, -0.03, -1.5}, up, 0.02, 0.02, false, 1, 1},
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m5.shadow_lookup");

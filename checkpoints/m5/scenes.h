@@ -266,6 +266,7 @@ struct ShadowCase {
     double constant_bias, slope_bias;
     bool pcf;
     double direction_scale = 1;  // the light's direction is passed this many times as long
+    double settings_radius = 0;  // 0: the settings passed carry the map's radius; else this one
 };
 std::vector<ShadowCase> shadow_cases();
 
