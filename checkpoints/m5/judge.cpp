@@ -1440,13 +1440,13 @@ void mark_mip_ambiguous(const Panel& p, raster::Mask& mask) {
 // the reference's) or the interpolated one before the map, and the slope bias follows it. On a
 // normal-mapped surface the two differ. The map's texels hold the surface's own depth, up to
 // `reach` texels from the point (about 0.7 without PCF, 2 with its 3x3), so tan(theta) * reach
-// nearer the light; the geometric normal's bias always covers that here, but a mapped normal
-// tilted toward the light by up to `tilt` (the largest angle of the normal map's texels from
-// straight up) may give less. Where it can, or where the geometric normal faces away from the
-// light while a mapped one may face it (the lookup is made by the shading normal), the two
-// choices can differ in the light state: such pixels join the lenient mask. (A walk-through
-// found 2 or 3 of them on m5.showcase's box, on its face away from the light, at some grading
-// seeds.)
+// nearer the light. A mapped normal tilted toward the light by up to `tilt` (the largest angle of
+// the normal map's texels from straight up) gives the smallest bias; where even that bias may
+// fall short of tan(theta) * reach, or where the geometric normal faces away from the light while
+// a mapped one may face it (the lookup is made by the shading normal), the two choices can differ
+// in the light state: such pixels join the lenient mask. theta is the flat triangle's (the scenes'
+// normal-mapped items are flat-faced or finely tessellated). (A walk-through found 2 or 3 such
+// pixels on m5.showcase's box, on its face away from the light, at some grading seeds.)
 double normal_map_tilt(const TextureSpec& spec) {
     double tilt = 0;
     for (const Vec3& c : level_of(spec).texels) {
@@ -1851,7 +1851,7 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
          {"normal map", "TODOs 5 and 9: draw_scene computes each mesh triangle's tangent_frame from its WORLD positions "
                         "and uv; fill_triangle perturbs the normalized normal with the normal map's bilinear level-0 "
                         "texel (sample_bilinear, whatever the material's filter), read with the normal map's own wrap "
-                        "modes (wrap_u, wrap_v)"}},
+                        "modes (wrap_u, wrap_v), and tests whether a light arrives (c = dot(N, L) > 0) with that perturbed normal"}},
         {"m5.degenerate_uv",
          {"normal map", "TODOs 5 and 9: a triangle whose tangent frame is not valid keeps its normal"}},
         {"m5.shadow_box",

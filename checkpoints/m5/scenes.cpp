@@ -533,7 +533,9 @@ std::vector<Scene> build() {
                           "clamp to edge in u stretches the flat edge texels; the bumps lie in the map's top half, and "
                           "mirrored repeat in v reads that half again above the map and the flat bottom half below it); "
                           "the map read with sample_bilinear on level 0 whatever the material's filter (on the far right "
-                          "the texture is nearest, and the 8x8 map, magnified, stays smooth)",
+                          "the texture is nearest, and the 8x8 map, magnified, stays smooth); a second light grazes "
+                          "the turned quad from behind its plane, and only the bumps that face it catch it: whether a "
+                          "light arrives, c = dot(N, L) > 0, is asked of the PERTURBED normal",
                           {7, 6, 5, 9}, 640, 96);
         for (int p = 0; p < 2; ++p) {
             Mesh q = quad({-1.7, -1.2, 0}, {1.7, -1.2, 0}, {1.7, 1.2, 0}, {-1.7, 1.2, 0});
@@ -551,6 +553,9 @@ std::vector<Scene> build() {
             }
             Panel pn = panel(cam({0.02, 0.03, 4.2}), {it}, {tex(Pattern::kBumps, 64, 64, 4)}, 128 * p, 0, 128, 96);
             pn.lights = {sun({-0.6, -0.5, -0.8}, {0.8, 0.8, 0.8})};
+            // On the turned quad, a second light from the right, 7 degrees behind its plane: the
+            // geometry faces away from it, the bumps' slopes toward it catch it.
+            if (p == 1) pn.lights.push_back(sun({-0.99, 0.05, 0.12}, {0.9, 0.7, 0.5}));
             s.panels.push_back(pn);
         }
         // Six faces with smooth normals: in the middle of a face the interpolated normal has
