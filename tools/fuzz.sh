@@ -75,7 +75,7 @@ for m in "${milestones[@]}"; do
   else
     status=1
     found=$(ls -t "$artifacts" 2>/dev/null | head -1)
-    grep -E 'runtime error|ERROR: AddressSanitizer|fuzz: |^  look at: |deadly signal|timeout' "$log" | head -5
+    grep -m 5 -E 'runtime error|ERROR: AddressSanitizer|fuzz: |^  look at: |deadly signal|timeout' "$log"
     summary+=("$m: FAILED after ${execs:-?} inputs; input: $artifacts/${found:-?} (replay: $exe $artifacts/${found:-?})")
   fi
 done
