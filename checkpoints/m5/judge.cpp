@@ -1456,12 +1456,18 @@ double normal_map_tilt(const TextureSpec& spec) {
     return tilt;
 }
 
-void mark_shadow_normal_ambiguous(const Panel& p, raster::Mask& mask) {
-    if (p.items.empty() || p.w <= 0 || p.h <= 0 || !(p.shadows.resolution > 0)) return;
+// The panel's (last) light that casts shadows, or nullptr.
+const LightSpec* shadow_light(const Panel& p) {
     const LightSpec* light = nullptr;
     for (const LightSpec& l : p.lights) {
         if (l.casts_shadows) light = &l;
     }
+    return light;
+}
+
+void mark_shadow_normal_ambiguous(const Panel& p, raster::Mask& mask) {
+    if (p.items.empty() || p.w <= 0 || p.h <= 0 || !(p.shadows.resolution > 0)) return;
+    const LightSpec* light = shadow_light(p);
     if (!light) return;
     std::vector<double> tilt(p.items.size(), -1);  // -1: no normal map
     bool mapped = false;
@@ -1724,10 +1730,7 @@ NormalWrapDiff normal_map_wrap_diff(const Scene& s, const raster::Image& mine, c
 LightState wrong_light_state(const raster::Image& img, const Panel& p) {
     const auto tris = world_triangles(p, false);
     const Basis b = basis(p.camera);
-    const LightSpec* light = nullptr;
-    for (const LightSpec& l : p.lights) {
-        if (l.casts_shadows) light = &l;
-    }
+    const LightSpec* light = shadow_light(p);
     if (!light) return {};
     const Vec3 to_light = -unit_or_zero(light->direction);
     LightState state;
