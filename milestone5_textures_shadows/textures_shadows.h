@@ -93,9 +93,9 @@
 //  * Only what a scene needs (tested through Stats): untextured materials never sample, a
 //    mipmap pyramid is built (once per texture) when a mip filter reads a level above 0, and
 //    never for lambda <= 0 (or NaN) or for kNearest and kBilinear, the level of detail is
-//    computed only for mip filters, a normal map is read only where a material has one, the
-//    shadow pass runs (and its map is allocated) only for a light that casts shadows, and
-//    shadows are looked up only where c > 0. A fragment hidden behind a nearer one is not
+//    computed only for mip filters, a normal map is read (and a tangent frame made) only where a
+//    LIT material has one (an unlit one uses no normal), the shadow pass runs (and its map is
+//    allocated) only for a light that casts shadows, and shadows are looked up only where c > 0. A fragment hidden behind a nearer one is not
 //    shaded (as in milestone 4). Four counts are LEFT FREE, and both answers pass each:
 //    (a) where lambda > 0 but only level 0 is read (a 1x1 texture, whose pyramid is itself, or
 //    kNearestMip with lambda < 0.5), building the pyramid (and counting it) or not;
@@ -227,7 +227,10 @@ Vec3 sample(Texture& texture, Vec2 uv, double lambda, Filter filter, long long* 
 // ---- TODO 6: Blinn-Phong ----
 // One light's diffuse plus specular at a surface point (see Blinn-Phong above), unshadowed, in
 // levels: zero when dot(N, L) <= 0. normal, to_eye and to_light need not have length 1
-// (normalize each; a zero one makes the light add nothing, never NaN).
+// (normalize each; a zero one makes the light add nothing, never NaN). A vector so short or so
+// long that x^2 + y^2 + z^2 underflows to 0 or overflows (components below about 1e-154 or above
+// about 1e154) may count as zero or be normalized exactly (std::hypot, or scaled first): both
+// are defined, and no checkpoint depends on which. The same holds for a light's direction.
 Vec3 blinn_phong(Vec3 base, Vec3 specular, double shininess, Vec3 normal, Vec3 to_eye, Vec3 to_light, Vec3 intensity);
 
 // ---- TODO 7: tangent-space normal maps ----
@@ -352,8 +355,8 @@ struct FillState {
 // there; lit ones normalize the normal, perturb it by the normal map if any (reading the map
 // where state.tangent is not valid is free, see Only what a scene needs above), and add ambient
 // and each light (blinn_phong with that normal, times shadow_factor for a light with a map,
-// whose n is free, see there; skipped where dot(N, L) <= 0); then m4::to_color and the depth
-// test m4::depth_passes decide the write.
+// whose n is free, see there; skipped where dot(N, L) <= 0 for that same, perturbed N); then
+// m4::to_color and the depth test m4::depth_passes decide the write.
 // Counts into stats what it does (fragments, shaded, texture_samples, ...). triangles_drawn is
 // counted once per fan triangle, either here as fill_triangle is entered or by draw_scene as it
 // passes one (the reference does the latter), not both.
@@ -366,7 +369,7 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
 // 2. each object: every position once to clip space and world space, its normal to world
 //    space (m4::normal_matrix, normalized; m4::vertex_normals when the mesh has none, only for
 //    lit materials); per mesh triangle in list order (skipping an index out of range or a
-//    non-finite clip coordinate): the tangent frame when the material has a normal map,
+//    non-finite clip coordinate): the tangent frame when the material is lit and has a normal map,
 //    m4::clip_triangle unless all three vertices are inside, the fan (0, i, i + 1) (any
 //    triangulation passes, as in milestone 4), m3::to_screen, fill_triangle. No culling.
 Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera& camera, const Lighting& lighting,

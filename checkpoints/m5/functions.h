@@ -52,6 +52,7 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"mipmap builds", {"TODO 4", "build the pyramid once, the first time a mip filter reads a level above 0; never for lambda <= 0"}},
         {"perspective uv", {"TODO 5", "interpolate u/w, v/w and 1/w on the screen (m4::perspective_weights), in double"}},
         {"rasterizer", {"TODO 5", "milestone 2's snapping, edge functions and top-left rule; depth pre-test before shading"}},
+        {"ambient", {"TODO 5", "every fragment gets base times lighting.ambient once, lit or not; a light's intensity scales only its own blinn_phong term"}},
         {"specular", {"TODO 6", "base c I + specular max(0, N.H)^shininess I with H = normalize(L + V)"}},
         {"halfway vector", {"TODO 6", "normalize H = L + V before the dot product"}},
         {"light behind", {"TODO 6", "dot(N, L) <= 0: the light adds nothing, specular included"}},

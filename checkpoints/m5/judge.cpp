@@ -41,6 +41,20 @@ std::string str(Vec2 p) { return "(" + num(p.x) + ", " + num(p.y) + ")"; }
 bool same3(Vec3 a, Vec3 b, double tol) { return close(a.x, b.x, tol) && close(a.y, b.y, tol) && close(a.z, b.z, tol); }
 Vec3 mul(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 
+// Whether `mine` misses `want` by no more than float's rounding would (a relative 1e-5, far above
+// double's 1e-16 and the 1e-9 the numbers are judged with), and then what to say.
+std::string float_rounding(Vec3 mine, Vec3 want) {
+    double worst = 0;
+    for (auto [a, b] : {std::pair{mine.x, want.x}, std::pair{mine.y, want.y}, std::pair{mine.z, want.z}}) {
+        if (!std::isfinite(a) || !std::isfinite(b)) return "";
+        worst = std::max(worst, std::abs(a - b) / std::max(1.0, std::abs(b)));
+    }
+    if (!(worst <= 1e-5)) return "";
+    return ": off by " + num(worst) + " relative, the size of FLOAT's rounding; the header asks for double everywhere "
+           "until a color is stored (numbers are judged within 1e-9 relative): keep every weight, coordinate and sum "
+           "a double";
+}
+
 Vec3 unit_or_zero(Vec3 v) {
     const double len = raster::length(v);
     if (!(len > 0) || !std::isfinite(len)) return {};
@@ -516,6 +530,8 @@ void judge_sampling(Ctx& c) {
                   "0.5 before floor (at a texel's center the sample is that texel exactly)";
         } else if (same3(mine, t_bilinear(l, k.uv, k.wu, k.wv, 0.5, true), 1e-9)) {
             why = ": the weights are swapped: texel i gets (1 - a), texel i + 1 gets a, where a = x' - floor(x')";
+        } else {
+            why = float_rounding(mine, want);
         }
         bilinear.add(topic, "TODO 2: sample_bilinear at " + inputs + " gave " + str(mine) + ", expected " + str(want) + why);
     }
@@ -665,6 +681,21 @@ void judge_lod(Ctx& c) {
                   " derivatives alone; rho is the LARGER of the two screen directions' lengths in texels, "
                   "max(|(W du/dx, H dv/dx)|, |(W du/dy, H dv/dy)|): a surface receding along the other direction "
                   "shrinks its texels there";
+        } else if (k.width != k.height && (close(mine, t_lambda(k.du_dx, k.dv_dx, k.du_dy, k.dv_dy, k.width, k.width), 1e-6) ||
+                                            close(mine, t_lambda(k.du_dx, k.dv_dx, k.du_dy, k.dv_dy, k.height, k.height), 1e-6) ||
+                                            close(mine, t_lambda(k.du_dx, k.dv_dx, k.du_dy, k.dv_dy, k.height, k.width), 1e-6))) {
+            why = ": that scales u and v by the same size, or each by the other's; a texture that is not square has "
+                  "W texels across u and H down v: du times the WIDTH, dv times the HEIGHT";
+        } else if (const double ux = k.width * k.du_dx, vx = k.height * k.dv_dx, uy = k.width * k.du_dy, vy = k.height * k.dv_dy;
+                   close(mine, std::log2(std::max(std::max(std::abs(ux), std::abs(vx)), std::max(std::abs(uy), std::abs(vy)))), 1e-6)) {
+            why = ": that is rho from the largest single component; the header's rho is the LENGTH of each screen "
+                  "direction's texel step, sqrt((W du/dx)^2 + (H dv/dx)^2), and the larger of the two lengths "
+                  "(a step diagonal in the texture covers more texels than either component)";
+        } else if (close(mine, 0.5 * std::log2(ux * ux + vx * vx + uy * uy + vy * vy), 1e-6) ||
+                   close(mine, std::log2(std::sqrt(ux * ux + vx * vx) + std::sqrt(uy * uy + vy * vy)), 1e-6) ||
+                   close(mine, std::log2((std::sqrt(ux * ux + vx * vx) + std::sqrt(uy * uy + vy * vy)) / 2), 1e-6)) {
+            why = ": that combines the two screen directions (a sum, a mean or one length of all four numbers); rho is "
+                  "the LARGER of the two directions' lengths, max(|(W du/dx, H dv/dx)|, |(W du/dy, H dv/dy)|)";
         } else if (std::isfinite(want) && close(mine, want * std::log(2.0), 1e-6)) {
             why = ": lambda is log2(rho), not the natural logarithm";
         } else if (std::isinf(want)) {
@@ -731,6 +762,8 @@ void judge_filter(Ctx& c) {
                 why = ": that is the blend the wrong way round, f = " + num(f) + " on level floor(lambda) = " +
                       num(std::floor(lam)) + " and 1 - f on the next; the fraction f = lambda - floor(lambda) is the "
                       "weight of the NEXT level: (1 - f) bilinear(level floor(lambda)) + f bilinear(level floor(lambda) + 1)";
+            } else if (const std::string rounding = float_rounding(mine, want); !rounding.empty()) {
+                why = rounding;
             } else if (k.filter == Filter::kNearestMip) {
                 why = ": nearest-mip reads level floor(lambda + 0.5) (here " + num(std::floor(std::min(k.lambda, top) + 0.5)) +
                       ") bilinearly";
@@ -876,6 +909,8 @@ void judge_phong(Ctx& c) {
         } else if ((raster::length(k.normal) != 1 || raster::length(k.to_eye) != 1 || raster::length(k.to_light) != 1) &&
                    same3(mine, unnormalized_phong(k), 1e-9)) {
             why = ": normalize N, V and L first (here they are not of length 1; a zero one makes the light add nothing)";
+        } else {
+            why = float_rounding(mine, want);
         }
         if (why.empty() && cl > 0) {
             // Which half is off: the diffuse part is base * c * I, the rest must be the specular term.
@@ -1774,9 +1809,9 @@ LightState wrong_light_state(const raster::Image& img, const Panel& p) {
 namespace {
 
 // The exact spheres (every item a uv_sphere of radius size.x), lit with Blinn-Phong per pixel;
-// the ambient term `ambient_times` times (1: the rule; the number of lights: a known mistake),
+// the ambient term base times `ambient` (the panel's: the rule; others: known mistakes),
 // L = to_light_sign * direction (-1: the rule; +1: the light's direction taken as L, a mistake).
-raster::Image exact_spheres(const Panel& p, double ambient_times = 1, double to_light_sign = -1) {
+raster::Image exact_spheres(const Panel& p, std::optional<Vec3> ambient = {}, double to_light_sign = -1) {
     raster::Image img(p.w, p.h, p.background);
     const Basis b = basis(p.camera);
     for (int y = 0; y < p.h; ++y) {
@@ -1800,7 +1835,7 @@ raster::Image exact_spheres(const Panel& p, double ambient_times = 1, double to_
             const Vec3 n = unit_or_zero(hit - hit_item->position);
             const Color base = hit_item->material.color;
             const Vec3 bv{double(base.r), double(base.g), double(base.b)};
-            Vec3 sum = mul(bv, p.ambient * ambient_times);
+            Vec3 sum = mul(bv, ambient.value_or(p.ambient));
             for (const LightSpec& l : p.lights) {
                 PhongCase k{bv, hit_item->material.specular, hit_item->material.shininess, n, p.camera.eye - hit, l.direction * to_light_sign,
                             l.intensity};
@@ -2283,6 +2318,13 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 topic = "needs";
                 why = " [needs]: this scene does not need that stage, so it must not run";
                 if (name == "lod_computed") why += " (the level of detail is computed for mip filters only)";
+                const bool unlit_mapped = std::any_of(panel.items.begin(), panel.items.end(), [](const Item& it) {
+                    return !it.material.lit && it.material.normal_map >= 0;
+                });
+                if ((name == "tangent_frames" || name == "normal_map_samples") && unlit_mapped) {
+                    why += " (an unlit material uses no normal, so its normal map needs neither a tangent frame nor a "
+                           "read: only a LIT material with a normal map gets them)";
+                }
             } else if (work && a > b) {
                 topic = "needs";
                 why = ": more than this scene needs";
@@ -2406,26 +2448,42 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
             const double err = panel_error(*mine, panel, truth);
             const double ref_err = ref_main == ref.images.end() ? err : panel_error(ref_main->second, panel, truth);
             c.j.measures["mean error vs the exact Blinn-Phong spheres, levels (reference " + num(round2(ref_err)) + ")"] = round2(err);
-            if (err > ref_err + 0.5) {
-                // Ambient once per light instead of once per fragment: the exact spheres with it.
+            // Off on average, or a picture beyond the tolerance that is nearer the exact spheres lit
+            // by one of the known mistakes than the right ones (a small ambient error stays within
+            // half a level on average, but not within the picture's tolerance).
+            const bool off = err > ref_err + 0.5;
+            if (off || differs) {
+                // The known mistakes of the ambient term, and L = +direction: the exact spheres with each.
+                const auto matches = [&](std::optional<Vec3> ambient, double to_light_sign = -1) {
+                    const double e = panel_error(*mine, panel, exact_spheres(panel, ambient, to_light_sign));
+                    return e <= ref_err + 0.5 && (off || e + 0.2 < err);
+                };
+                Vec3 all_intensities{};
+                for (const LightSpec& l : panel.lights) all_intensities = all_intensities + l.intensity;
                 const double lights = double(panel.lights.size());
-                const bool ambient_per_light =
-                    lights > 1 && panel_error(*mine, panel, exact_spheres(panel, lights)) <= ref_err + 0.5;
-                // L = +direction: lit from the opposite side.
-                const bool l_reversed = !ambient_per_light && panel_error(*mine, panel, exact_spheres(panel, 1, 1)) <= ref_err + 0.5;
-                c.add("specular", "TODO 5: the spheres are " + plural(round2(err), "level") +
+                std::string why, topic = "ambient";
+                if (lights > 1 && matches(panel.ambient * lights)) {
+                    why = ", but they match the exact spheres lit with the ambient term added once per LIGHT (as closely "
+                          "as the reference matches the right ones): add ambient (base times lighting.ambient) once per "
+                          "fragment, then blinn_phong for each light";
+                } else if (!panel.lights.empty() && (matches(mul(panel.ambient, panel.lights[0].intensity)) ||
+                                                     matches(mul(panel.ambient, all_intensities)))) {
+                    why = ", but they match the exact spheres whose ambient term is scaled by the lights' intensity: "
+                          "ambient is base times lighting.ambient alone, once per fragment (it stands for light from "
+                          "everywhere, not from one of the lights); the intensity scales only blinn_phong's terms";
+                } else if (matches(Vec3{})) {
+                    why = ", but they match the exact spheres WITHOUT the ambient term (their dark sides are black): "
+                          "every fragment gets base times lighting.ambient once, lit or not, then blinn_phong for each light";
+                } else {
+                    topic = "specular";
+                    why = matches({}, 1) ? ", but they match the exact spheres lit from the OPPOSITE side: L, toward the "
+                                           "light, is -direction (a Light's direction is the way its rays travel), normalized"
+                          : off          ? ": " + theme_advice.substr(theme_advice.find(": ") + 2)
+                                         : "";
+                }
+                if (!why.empty()) c.add(topic, "TODO 5: the spheres are " + plural(round2(err), "level") +
                                       " from the exact Blinn-Phong spheres on average, the reference's " +
-                                      num(round2(ref_err)) +
-                                      (ambient_per_light
-                                           ? ", but they match the exact spheres lit with the ambient term added "
-                                             "once per LIGHT (as closely as the reference matches the right ones): add "
-                                             "ambient (base times lighting.ambient) once per fragment, then blinn_phong "
-                                             "for each light"
-                                       : l_reversed
-                                           ? ", but they match the exact spheres lit from the OPPOSITE side: L, toward "
-                                             "the light, is -direction (a Light's direction is the way its rays "
-                                             "travel), normalized"
-                                           : ": " + theme_advice.substr(theme_advice.find(": ") + 2)));
+                                      num(round2(ref_err)) + why);
             }
         }
     }

@@ -741,7 +741,8 @@ std::vector<Scene> build() {
     {
         Scene s = picture("m5.needs", "Four panels, four sets of needs: what each stage costs",
                           "untextured materials never sample; lambda only for mip filters; the pyramid only when a "
-                          "fragment has lambda > 0, once per texture; the shadow pass only for a light that casts",
+                          "fragment has lambda > 0, once per texture; an unlit material's normal map is never read "
+                          "(no tangent frame either); the shadow pass only for a light that casts",
                           {9, 5, 4}, 288, 72);
         for (int p = 0; p < 4; ++p) {
             Panel pn = panel(cam({0.03, 0.05, 3.2}), {}, {}, 72 * p, 0, 72, 72);
@@ -755,8 +756,11 @@ std::vector<Scene> build() {
                 pn.items.push_back(item(uv_sphere(24), m));
             }
             if (p == 2) {
-                pn.textures = {tex(Pattern::kNoise, 4, 4)};
-                pn.items.push_back(item(facing_quad(1.0, 0, {0, 0}, {1, 1}), unlit(0, Filter::kTrilinear)));
+                // Unlit, with a normal map it never uses: no tangent frame, no normal-map read.
+                pn.textures = {tex(Pattern::kNoise, 4, 4), tex(Pattern::kBumps, 16, 16, 2)};
+                MaterialSpec m = unlit(0, Filter::kTrilinear);
+                m.normal_map = 1;
+                pn.items.push_back(item(facing_quad(1.0, 0, {0, 0}, {1, 1}), m));
             }
             if (p == 3) {
                 // Two floors share one texture (one pyramid); one light casts shadows, one does not.

@@ -729,8 +729,9 @@ Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera&
         state.material = &material;
         state.tangent = {};
         const bool lit = material.lit;
-        const bool normal_mapped = material.normal_map != nullptr;  // its frames need world positions and uv
-        const bool need_world = lit || normal_mapped;
+        // An unlit material uses no normal: no tangent frame, and fill_triangle reads no normal map.
+        const bool normal_mapped = lit && material.normal_map != nullptr;
+        const bool need_world = lit;  // the lights' vectors and the tangent frames
         const bool need_uv = material.texture || normal_mapped;
         const int n = static_cast<int>(mesh.positions.size());
 
