@@ -28,6 +28,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -39,6 +40,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -623,14 +625,35 @@ int cmd_report(const std::vector<std::string>& args) {
 
 // ---- the class ----
 
-std::string csv_field(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+// A CSV field: quoted where it holds a comma, a quote or a line break; and a text a spreadsheet
+// would take for a formula (=, +, -, @, a tab or a carriage return first: a submission's name
+// is the student's to choose) starts with an apostrophe, which the spreadsheet shows as text.
+std::string csv_field(std::string s) {
+    if (!s.empty() && std::string_view("=+-@\t\r").find(s[0]) != std::string_view::npos) s = "'" + s;
+    if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
     std::string out = "\"";
     for (char c : s) {
         if (c == '"') out += '"';
         out += c;
     }
     return out + "\"";
+}
+
+// A submission's name as a relative link: "./" first (a name like "javascript:..." is then no
+// scheme) and every byte but letters, digits and -._~ percent-encoded.
+std::string relative_link(const std::string& name, const std::string& rest) {
+    static const char* hex = "0123456789ABCDEF";
+    std::string out = "./";
+    for (unsigned char c : name) {
+        if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~') {
+            out += char(c);
+        } else {
+            out += '%';
+            out += hex[c >> 4];
+            out += hex[c & 15];
+        }
+    }
+    return out + rest;
 }
 
 int cmd_class(const std::vector<std::string>& args) {
@@ -688,7 +711,7 @@ int cmd_class(const std::vector<std::string>& args) {
     }
     std::set<std::string> milestones;
     for (const std::string& c : columns) milestones.insert(c.substr(0, c.find(' ')));
-    std::ofstream csv(out / "class.csv");
+    std::ostringstream csv;
     csv << "submission,score";
     for (const std::string& m : milestones) csv << "," << csv_field(m);
     for (const std::string& c : columns) csv << "," << csv_field(c);
@@ -701,7 +724,7 @@ int cmd_class(const std::vector<std::string>& args) {
     }
     std::vector<std::string> order = columns;
     std::stable_sort(order.begin(), order.end(), [&](const std::string& a, const std::string& b) { return fails[a] > fails[b]; });
-    std::ofstream html(out / "class.html");
+    std::ostringstream html;
     html << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>Class results</title>" << kStyle
          << "</head><body><h1>Class results</h1><p>" << rows.size()
          << " submission(s): their points first, then the checkpoints the class fails most, with the concept their "
@@ -709,7 +732,7 @@ int cmd_class(const std::vector<std::string>& args) {
     for (const std::string& m : milestones) html << "<th>" << html_escape(m) << "</th>";
     html << "<th>not built</th></tr>\n";
     for (const Row& r : rows) {
-        html << "<tr><td><a href=\"" << html_escape(r.who) << "/report.html\">" << html_escape(r.who) << "</a></td><td>"
+        html << "<tr><td><a href=\"" << html_escape(relative_link(r.who, "/report.html")) << "\">" << html_escape(r.who) << "</a></td><td>"
              << fmt_points(r.score) << "</td>";
         for (const std::string& m : milestones) html << "<td>" << fmt_points(r.milestone.count(m) ? r.milestone.at(m) : 0) << "</td>";
         html << "<td>" << html_escape(r.unbuilt) << "</td></tr>\n";
@@ -725,6 +748,8 @@ int cmd_class(const std::vector<std::string>& args) {
              << html_escape(concepts) << "</td></tr>\n";
     }
     html << "</table>" << cp::kPictureLoadMarker << "</body></html>\n";
+    write_file_checked(out / "class.csv", csv.str());
+    write_file_checked(out / "class.html", html.str());
     std::cout << "class results: " << (out / "class.csv").string() << ", " << (out / "class.html").string() << "\n";
     return 0;
 }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <locale>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -222,6 +223,9 @@ void save_artifacts(const std::string& dir, const Artifacts& a) {
     fs::create_directories(dir);
     for (const auto& [name, img] : a.images) raster::write_png((fs::path(dir) / (name + ".png")).string(), img);
     std::ofstream out(fs::path(dir) / "values.txt");
+    // The classic locale, whatever the global one is now: student code may have replaced it
+    // (std::locale::global with its own number facet), and the numbers must be the program's.
+    out.imbue(std::locale::classic());
     out << std::setprecision(17);
     out << "seconds " << a.seconds << "\nstray_writes " << a.stray_writes << "\n";
     for (const auto& [name, v] : a.values) out << "value " << name << " " << v << "\n";

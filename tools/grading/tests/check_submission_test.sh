@@ -114,9 +114,40 @@ attack dotdot 'include of' '#include "../../../../../../etc/hostname"'
 attack line_rename '#line' '#line 1 "/usr/include/stdio.h"
 long sneaky() { long r; asm volatile("syscall" : "=a"(r) : "a"(39)); return r; }'
 attack macro_header 'changes that header' '!#define count_stray_write() count_nothing()'
+# A GCC line marker written by hand would make the lines after it pass for a system header's
+# (flag 3), where nothing is checked; so would one spliced, after a comment, or as a digraph.
+attack line_marker 'line directive' '# 1 "/usr/include/stdio.h" 1 3 4
+__attribute__((constructor)) static void before_main() {}
+# 400 "lines.cpp" 2'
+attack line_marker_spliced 'line directive' '#\
+ 1 "/usr/include/stdio.h" 1 3 4
+long sneaky() { long r; asm volatile("syscall" : "=a"(r) : "a"(39)); return r; }'
+attack line_marker_comment 'line directive' '%:/*
+*/ 1 "/usr/include/stdio.h" 1 3 4
+long sneaky() { long r; asm volatile("syscall" : "=a"(r) : "a"(39)); return r; }'
+attack line_same_file 'line directive' '#line 1'
+# A line inside a raw string that looks like a marker is a string to the compiler: the
+# preprocessed file's lines after it are still the student's and still checked.
+attack raw_string_marker 'inline assembly' 'const char* text = R"(
+# 1 "/usr/include/stdio.h" 1 3 4
+)";
+long sneaky() { long r; asm volatile("syscall" : "=a"(r) : "a"(39)); return r; }'
+# Checked as tokens, not lines: split across lines, or spelled with digraphs.
+attack split_attribute 'gnu::' '[[
+gnu::constructor
+]] static void before_main() {}'
+attack digraph_attribute 'gnu::' '<:<:gnu::constructor:>:> static void before_main() {}'
+attack split_namespace 'namespace' 'namespace
+std { inline int mine = 1; }'
 attack private_public 'changes that header' '!#define private public'
 attack raster_namespace 'namespace' 'namespace raster { long my_strays() { return 0; } }'
 attack stray_total 'harness' 'long sneaky() { return raster::Image::total_stray_writes(); }'
+# The render half's own code (m1cp::student::render saves the artifacts), and the program's
+# allocator, even as an inline (weak) definition.
+attack harness_render 'the harness' 'namespace m1cp { namespace student { int render(const std::string&) { return 0; } } }'
+attack inline_new 'allocator' '#include <cstdlib>
+inline void* operator new(std::size_t n) { return std::malloc(n ? n : 1); }
+void* (*sneaky)(std::size_t) = ::operator new;  // its address: the inline one is emitted (weak)'
 attack interpose 'defines write' 'extern "C" long write(int, const void*, unsigned long) { return 0; }'
 attack thread 'threads' '#include <thread>
 void sneaky() { std::thread([] {}).detach(); }'

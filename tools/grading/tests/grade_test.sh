@@ -273,6 +273,42 @@ assert 'advice (not graded' in o and 'outside the image' in o.split('advice (not
 assert t['m1 m1.outcodes']['score'] == t['m1 m1.outcodes']['max_score'], "a checkpoint without draw_line lost points"
 PY
     ;;
+  locale)
+    # The reference, with a global locale whose number facet writes every double as 4242 and
+    # every integer as 0, set before main (only std:: names: the code check accepts it). The
+    # harness writes values.txt in the classic locale, so the answers and the render times the
+    # grade shows are the program's, not the facet's.
+    cp "$root/solutions/milestone1_lines/lines.cpp" "$work/lines.cpp"
+    cat >>"$work/lines.cpp" <<'CPP'
+#include <locale>
+namespace {
+struct Rewrite : std::num_put<char> {
+    iter_type do_put(iter_type out, std::ios_base&, char, double) const override {
+        for (char ch : {'4', '2', '4', '2'}) *out++ = ch;
+        return out;
+    }
+    iter_type do_put(iter_type out, std::ios_base&, char, long) const override {
+        *out++ = '0';
+        return out;
+    }
+};
+const bool rewritten = [] {
+    std::locale::global(std::locale(std::locale::classic(), new Rewrite));
+    return true;
+}();
+}  // namespace
+CPP
+    make_submission "$work/sub" "$work/lines.cpp"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
+      --only m1.octant_1,m1.outcodes "$work/sub" >"$work/log" 2>&1 || { cat "$work/log"; fail "grading failed"; }
+    python3 - "$work/out/results.json" <<'PY' || fail "a global locale changed what the render reported"
+import json, sys
+t = {x['name']: x for x in json.load(open(sys.argv[1]))['tests']}
+for name in ('m1 m1.octant_1', 'm1 m1.outcodes'):
+    assert t[name]['score'] == t[name]['max_score'], t[name]
+    assert '4242' not in t[name]['output'], t[name]['output']
+PY
+    ;;
   stray_rewrite)
     # The reference, but every line also writes outside the image, and a static destructor
     # (which would run after the artifacts are saved) rewrites values.txt to say "no stray
@@ -544,6 +580,37 @@ assert float(rows["carol"]["m1 m1.octant_3"]) == 0, rows["carol"]
 PY
     grep -q 'octant' "$work/out/class.html" || fail "class.html does not name the concept"
     for who in alice bob carol; do [ -f "$work/out/$who/report.html" ] || fail "no report for $who"; done
+    ;;
+  batch_names)
+    # Names a class may hold: one that is a class view's file (class.html), one that two
+    # submissions share (a folder and a zip), a spreadsheet formula, a URL scheme, and a zip
+    # whose entries carry no Unix file type (as some zip tools write them). Each is graded as
+    # itself (the taken names with a suffix), class.csv and class.html are the class view's,
+    # a name cannot become a formula or a script link, and the zip's file is found.
+    mkdir "$work/class"
+    for who in class.html alice '=HYPERLINK("x")' 'javascript:alert(1)'; do
+      make_submission "$work/class/$who" "$root/solutions/milestone1_lines/lines.cpp"
+    done
+    (cd "$work/class/alice" && zip -qr "$work/class/alice.zip" .)
+    python3 - "$work/class/dave.zip" "$root/solutions/milestone1_lines/lines.cpp" <<'PY'
+import sys, zipfile
+with zipfile.ZipFile(sys.argv[1], "w") as z:
+    z.writestr(zipfile.ZipInfo("milestone1_lines/lines.cpp"), open(sys.argv[2]).read())  # no file type
+PY
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
+      --only m1.octant_1 --batch "$work/class" >"$work/log" 2>&1 || { cat "$work/log"; fail "batch grading failed"; }
+    [ -f "$work/out/class.csv" ] && [ -f "$work/out/class.html" ] || { cat "$work/log"; fail "the class view is missing"; }
+    grep -q 'graded as "class.html (2)"' "$work/log" || { cat "$work/log"; fail "the renamed submission is not told"; }
+    python3 - "$work/out/class.csv" "$work/out/class.html" <<'PY' || { cat "$work/log"; fail "the class view is wrong (above)"; }
+import csv, re, sys
+rows = {r["submission"]: r for r in csv.DictReader(open(sys.argv[1]))}
+want = {"class.html (2)", "alice", "alice (2)", "'=HYPERLINK(\"x\")", "javascript:alert(1)", "dave"}
+assert set(rows) == want, sorted(rows)
+assert all(float(r["m1"]) == 2 for r in rows.values()), rows
+links = re.findall(r'href="([^"]*)"', open(sys.argv[2]).read())
+assert links and all(l.startswith("./") for l in links), links
+assert "./javascript%3Aalert%281%29/report.html" in links, links
+PY
     ;;
   cumulative)
     # Empty milestones 1 and 2 (the skeleton) under a correct milestone 3: by default milestone 3
