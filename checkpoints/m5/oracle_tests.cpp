@@ -920,6 +920,25 @@ TEST_CASE("only what the scene needs, and a light behind everything", "[m5][pipe
     CHECK(frame.color.at(width / 2, height / 2 + 10) == Color{200, 200, 200});
 }
 
+TEST_CASE("an unlit material with a normal map makes no tangent frame and reads no normal map", "[m5][pipeline][needs]") {
+    const int width = 64, height = 48;
+    const View v = camera_view({0, 3, 3}, width, height);
+    m4r::Mesh floor = floor_mesh();
+    ref::Texture normals = texture_of(random_level(4, 4, 8));
+    ref::Object o;
+    o.mesh = &floor;
+    o.material.lit = false;
+    o.material.normal_map = &normals;
+    ref::Lighting lighting;
+    lighting.lights.push_back({{0.2, -1, -0.3}, {0.9, 0.9, 0.9}, false});
+    m4r::Frame frame = new_frame(width, height);
+    const ref::Stats s = ref::draw_scene(frame, {o}, v.camera, lighting, ref::ShadowSettings{});
+    CHECK(s.shaded > 100);
+    CHECK(s.tangent_frames == 0);
+    CHECK(s.normal_map_samples == 0);
+    CHECK(frame.color.at(width / 2, height / 2 + 10) == Color{200, 200, 200});
+}
+
 TEST_CASE("a normal-mapped floor with a degenerate uv mapping keeps its normal", "[m5][pipeline][extreme]") {
     const int width = 64, height = 48;
     const View v = camera_view({0, 3, 3}, width, height);
