@@ -95,8 +95,9 @@
 //    never for lambda <= 0 (or NaN) or for kNearest and kBilinear, the level of detail is
 //    computed only for mip filters, a normal map is read (and a tangent frame made) only where a
 //    LIT material has one (an unlit one uses no normal), the shadow pass runs (and its map is
-//    allocated) only for a light that casts shadows, and shadows are looked up only where c > 0. A fragment hidden behind a nearer one is not
-//    shaded (as in milestone 4). Four counts are LEFT FREE, and both answers pass each:
+//    allocated) only for a light that casts shadows, and shadows are looked up only where c > 0.
+//    A fragment hidden behind a nearer one is not shaded (as in milestone 4). Four counts are
+//    LEFT FREE, and both answers pass each:
 //    (a) where lambda > 0 but only level 0 is read (a 1x1 texture, whose pyramid is itself, or
 //    kNearestMip with lambda < 0.5), building the pyramid (and counting it) or not;
 //    (b) where a triangle's tangent frame is not valid, reading the normal map (and counting it)
@@ -369,8 +370,8 @@ void fill_triangle(Frame& frame, const std::array<ScreenVertex, 3>& v, const Fil
 // 2. each object: every position once to clip space and world space, its normal to world
 //    space (m4::normal_matrix, normalized; m4::vertex_normals when the mesh has none, only for
 //    lit materials); per mesh triangle in list order (skipping an index out of range or a
-//    non-finite clip coordinate): the tangent frame when the material is lit and has a normal map,
-//    m4::clip_triangle unless all three vertices are inside, the fan (0, i, i + 1) (any
+//    non-finite clip coordinate): the tangent frame when the material is lit and has a normal
+//    map, m4::clip_triangle unless all three vertices are inside, the fan (0, i, i + 1) (any
 //    triangulation passes, as in milestone 4), m3::to_screen, fill_triangle. No culling.
 Stats draw_scene(Frame& frame, const std::vector<Object>& objects, const Camera& camera, const Lighting& lighting,
                  const ShadowSettings& shadow_settings);
