@@ -88,7 +88,9 @@
 //    units), with the bias in world units bias = constant + slope * min(tan(theta), 10),
 //    tan(theta) = sqrt(1 - c^2) / c for c = dot(N, L) > 0. A texel outside the map, or never
 //    drawn (kClearKey), is lit. Without PCF the factor is 1 (lit) or 0; with PCF it is the lit
-//    fraction of the 3x3 texels around that one (any order of the nine).
+//    fraction of the 3x3 texels around that one (any order of the nine). The biased depth may
+//    be compared in double or rounded to a float first (as comparing float-Z keys would): that
+//    moves the comparison by half a float step, far less than any bias, and both pass.
 //
 //  * Only what a scene needs (tested through Stats): untextured materials never sample, a
 //    mipmap pyramid is built (once per texture) when a mip filter reads a level above 0, and
