@@ -215,6 +215,7 @@ int cmd_judge(const std::vector<std::string>& args) {
 
     // The student's artifacts: only what the scene can produce, as hostile input.
     std::vector<cp::Finding> early;
+    bool unreadable = false;  // then judging the empty artifacts adds nothing but echoes of it
     cp::Artifacts student;
     std::map<std::string, std::string> status;
     if (!status_file.empty()) {
@@ -224,7 +225,10 @@ int cmd_judge(const std::vector<std::string>& args) {
     try {
         student = cp::read_artifacts(artifacts_dir.string(), cp::rules_from_reference(reference));
     } catch (const cp::ArtifactError& e) {
-        if (early.empty()) early.push_back(cp::unreadable_artifacts_finding(e.what()));
+        if (early.empty()) {
+            early.push_back(cp::unreadable_artifacts_finding(e.what()));
+            unreadable = true;
+        }
         student = cp::Artifacts{};
     }
     // Graded: the verdict on what the trusted side can check; what only the counts said is advice.
@@ -240,7 +244,14 @@ int cmd_judge(const std::vector<std::string>& args) {
         v = std::move(*judged.graded);
     }
     if (!early.empty()) {
-        // The render itself failed: that is the verdict, whatever its output looks like.
+        // The render itself failed: that is the verdict, whatever its output looks like. Output
+        // that could not be read is judged as none, and what that judgement says ("the render
+        // produced no main image") is the same cause again: only the reason it was unreadable stays.
+        if (unreadable) {
+            v.findings.clear();
+            v.record.findings.clear();
+            v.record.concepts.clear();
+        }
         v.findings.insert(v.findings.begin(), early.begin(), early.end());
         std::vector<std::string> lines;
         for (const cp::Finding& f : early) lines.push_back("[" + f.topic + "] " + f.message);

@@ -1756,6 +1756,80 @@ NormalWrapDiff normal_map_wrap_diff(const Scene& s, const raster::Image& mine, c
     return out;
 }
 
+// The known mistakes of the ambient term leave a lit surface of one plain color off by the same
+// amount everywhere: base times lighting.ambient, times (lights - 1) when it is added once per
+// light, times (intensity - 1) when a light's intensity scales it, times -1 when it is left out.
+// For each panel whose lit items share one untextured color: the first of those offsets that
+// nearly all of the panel's pixels beyond the tolerance show (within rounding, or clamped at 0 or
+// 255 where the offset carries past them), with the panel and a phrase saying which mistake.
+struct AmbientOffset {
+    long long matching = 0, strict = 0;
+    std::string where, mistake;
+    Vec3 offset{};
+};
+AmbientOffset ambient_offset_diff(const Scene& s, const raster::Image& mine, const raster::Image& expected,
+                                  const cp::Tolerance& tol) {
+    AmbientOffset out;
+    if (mine.width() != expected.width() || mine.height() != expected.height()) return out;
+    for (std::size_t pi = 0; pi < s.panels.size(); ++pi) {
+        const Panel& p = s.panels[pi];
+        std::optional<Color> base;
+        bool plain_lit = !p.lights.empty();
+        for (const Item& it : p.items) {
+            if (!it.material.lit) continue;
+            const Color c = it.material.color;
+            plain_lit &= it.material.texture < 0 && (!base || (base->r == c.r && base->g == c.g && base->b == c.b));
+            base = c;
+        }
+        if (!plain_lit || !base) continue;
+        const Vec3 bv{double(base->r), double(base->g), double(base->b)}, ambient = mul(bv, p.ambient);
+        std::vector<std::pair<Vec3, std::string>> offsets;
+        if (p.lights.size() > 1) {
+            offsets.push_back({ambient * double(p.lights.size() - 1),
+                               "added once per LIGHT (" + std::to_string(p.lights.size()) + " lights here)"});
+        }
+        Vec3 all{};
+        for (const LightSpec& l : p.lights) all = all + l.intensity;
+        offsets.push_back({mul(ambient, p.lights[0].intensity) - ambient, "scaled by the light's intensity"});
+        if (p.lights.size() > 1) offsets.push_back({mul(ambient, all) - ambient, "scaled by the lights' intensities"});
+        offsets.push_back({ambient * -1.0, "left out (surfaces no light reaches are black)"});
+        std::vector<long long> hits(offsets.size(), 0);
+        long long strict = 0;
+        for (int y = 0; y < p.h; ++y) {
+            for (int x = 0; x < p.w; ++x) {
+                const int gx = p.x0 + x, gy = p.y0 + y;
+                if (!expected.in_bounds(gx, gy) || tol.lenient.get(gx, gy)) continue;
+                const Color a = mine.at(gx, gy), e = expected.at(gx, gy);
+                if (max_diff(a, e) <= tol.strict_channel_diff) continue;
+                ++strict;
+                for (std::size_t k = 0; k < offsets.size(); ++k) {
+                    const Vec3 o = offsets[k].first;
+                    const auto fits = [](int got, int want, double off) {
+                        const double target = want + off;
+                        if (target >= 254) return got >= 253;  // clamped at white
+                        if (target <= 1) return got <= 2;      // clamped at black
+                        return std::abs(got - target) <= 2;
+                    };
+                    hits[k] += fits(a.r, e.r, o.x) && fits(a.g, e.g, o.y) && fits(a.b, e.b, o.z);
+                }
+            }
+        }
+        for (std::size_t k = 0; k < offsets.size(); ++k) {
+            // The offset must be visible (over the tolerance in some channel) to tell it from noise.
+            const Vec3 o = offsets[k].first;
+            const double size = std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z)});
+            if (size <= tol.strict_channel_diff + 2 || hits[k] < 20 || 10 * hits[k] < 9 * strict) continue;
+            out.matching = hits[k];
+            out.strict = strict;
+            out.offset = o;
+            out.mistake = offsets[k].second;
+            out.where = s.panels.size() > 1 ? " of panel " + std::to_string(pi + 1) : "";
+            return out;
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
 // Pixels in the wrong light state: per pixel center the nearest surface by ray casting, lit or
@@ -2537,6 +2611,21 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                                     "repeat reads the map again backwards)" + one_axis);
             c.j.findings.back().hint = "fill_triangle reads the normal map with sample_bilinear on level 0 and the map's own "
                                        "wrap modes: sample_bilinear(level 0, uv, normal_map->wrap_u, normal_map->wrap_v)";
+        }
+        // Nearly all of a panel's difference one offset of the ambient term's size.
+        const AmbientOffset ao = ambient_offset_diff(s, *mine, expected, c.j.tolerance);
+        if (ao.matching > 0) {
+            const auto levels = [](Vec3 v) {
+                const auto one = [](double x) { return (x > 0 ? "+" : "") + num(std::round(x)); };
+                return "(" + one(v.x) + ", " + one(v.y) + ", " + one(v.z) + ")";
+            };
+            c.add("ambient", "TODO 5: " + std::to_string(ao.matching) + " of the " + std::to_string(ao.strict) +
+                                 " pixels" + ao.where + " that differ beyond the tolerance are off by the same (red, green, blue) = " +
+                                 levels(ao.offset) + " levels, lit or not: the size of the ambient term " +
+                                 ao.mistake + ". Ambient is base times lighting.ambient, added once per fragment " +
+                                 "(not per light, not scaled by an intensity), then blinn_phong for each light");
+            c.j.findings.back().hint = "fill_triangle adds base times lighting.ambient once per fragment, then each light's "
+                                       "blinn_phong term";
         }
         // Nearly all of it on normal-mapped items without a texture,
         const NormalUvDiff nu = normal_map_uv_diff(s, *mine, expected, c.j.tolerance);

@@ -235,6 +235,11 @@ PY
       python3 -c "import json; json.load(open('$r'))" || fail "results.json is not JSON"
       # Nothing read at compile time from outside the course's headers reaches the student.
       if grep -rq "root:x:0:0" "$work/out-$check"; then fail "the results quote /etc/passwd ($check the code check)"; fi
+      # Output that cannot be read is one finding, its reason, not also "no main image".
+      if [ "$attack" = png_bomb ] && [ "$check" = without ]; then
+        grep -q "could not be used" "$r" || fail "the unreadable PNG was not named: $(cat "$r")"
+        if grep -q "produced no main image" "$r"; then fail "an unreadable PNG was told twice: $(cat "$r")"; fi
+      fi
       check_clean
     done
     ;;
