@@ -281,7 +281,9 @@ struct ShadowMap {
 // shading normal blinn_phong gets (after the normal map, the reference's choice) or the
 // interpolated one before the map (the geometry's slope, which is what the depth map has).
 // fill_triangle never asks where the shading normal has dot(n, -direction) <= 0, so no
-// checkpoint tests the answer there.
+// checkpoint tests the answer there. With the interpolated normal it may ask where THAT one has
+// c <= 0 (the map turned the shading normal toward the light): the bias there is free, the
+// capped constant + slope * 10 (the reference's) or the formula as it stands (a negative tan).
 double shadow_factor(const ShadowMap& map, Vec3 p, Vec3 n, Vec3 direction, const ShadowSettings& settings);
 
 // ---- TODO 5 and TODO 9: the textured, lit, shadowed pipeline ----
@@ -347,7 +349,8 @@ struct FillState {
 
 // TODO 5: one triangle (both windings, milestone 2's snapping and fill rule) into the frame,
 // which always has a float-Z depth buffer. Per covered pixel center: the screen weights l, the
-// key m4::depth_key(kFloatZ, z_ndc, w) of the screen-interpolated z_ndc; a fragment whose key is
+// key m4::depth_key(kFloatZ, z_ndc, w) of the screen-interpolated z_ndc (a float-Z key ignores
+// w: pass the fragment's w, 1 / sum(l_i / w_i) as in milestone 4, or any); a fragment whose key is
 // kClearKey or greater than the stored key is dropped before anything else (not shaded); else the
 // perspective-correct weights (m4::perspective_weights) interpolate uv, normal and world
 // position; the base color is the material's color or sample() of its texture (with lambda from

@@ -406,6 +406,11 @@ int main(int argc, char** argv) {
                   << "    cd checkpoints/run/" << r.milestone << "_student && ../../checkpoints_" << r.milestone << " "
                   << r.id << "\n";
     }
+    // Variants asked for (RASTER_SCENE_SEED): say so, so a table of other pictures is not a surprise.
+    if (const char* seed = std::getenv("RASTER_SCENE_SEED"); seed != nullptr && *seed != '\0' && std::string(seed) != "0") {
+        std::cout << "Scenes: the variants of seed " << seed << " (RASTER_SCENE_SEED), not the public ones; each expected "
+                  << "picture is the reference's of that variant.\n";
+    }
     const std::string html = (build / "check_results.html").string();
     write_html(records, html);
     std::cout << "This table is also in " << json_path << ",\nand with every failure's findings and pictures in " << html

@@ -28,10 +28,12 @@ inline std::vector<cp::StudentFunction> functions() {
         {"perturb_normal", {7}, {}, "normal map", ""},
         {"light_view_projection", {8}, {}, "light matrix", ""},
         {"shadow_factor", {8}, {}, "shadow", "a texel outside the map is lit: test the row and column before reading a key"},
-        {"fill_triangle", {5},
-         {"sample", "uv_derivatives", "level_of_detail", "blinn_phong", "perturb_normal", "shadow_factor"},
-         "rasterizer", "loop over the pixels of the bounding box once, clamped to the image"},
-        {"draw_scene", {9}, {"fill_triangle", "tangent_frame", "light_view_projection"}, "pipeline",
+        // fill_triangle and draw_scene list no functions they may call: what a scene needs of
+        // them (sample() for a texture, blinn_phong for a lit material, ...) the render half
+        // calls on its own as the scene's prerequisites (prerequisite_groups), so the trace has
+        // exactly those, and a checkpoint's "needs" names only the TODOs its scene uses.
+        {"fill_triangle", {5}, {}, "rasterizer", "loop over the pixels of the bounding box once, clamped to the image"},
+        {"draw_scene", {9}, {"fill_triangle"}, "pipeline",
          "loop over the lights once, the objects once per pass and each mesh's triangles once"},
     };
 }

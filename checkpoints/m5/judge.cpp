@@ -275,13 +275,17 @@ Vec3 t_perturb(const PerturbCase& c, int mode = 0) {
         !raster::is_finite(c.bitangent)) {
         return n;
     }
-    const Vec3 tp = mode == 2 ? unit_or_zero(c.tangent) : unit_or_zero(c.tangent - n * raster::dot(n, c.tangent));
+    const Vec3 tp = mode == 2 || mode == 6 ? unit_or_zero(c.tangent) : unit_or_zero(c.tangent - n * raster::dot(n, c.tangent));
     if (tp == Vec3{}) return n;
     Vec3 bp = raster::cross(n, tp);
     if (raster::dot(bp, c.bitangent) < 0 && mode != 3) bp = -bp;
     if (mode == 2) bp = unit_or_zero(c.bitangent);
     if (mode == 4) bp = unit_or_zero(c.bitangent - n * raster::dot(n, c.bitangent));  // against n, not T'
-    const Vec3 m = mode == 1 ? c.texel / 255 : c.texel * 2.0 / 255 - Vec3{1, 1, 1};
+    const Vec3 m = mode == 1   ? c.texel / 255
+                   : mode == 7 ? (c.texel - Vec3{128, 128, 128}) / 127
+                   : mode == 8 ? (c.texel - Vec3{128, 128, 128}) / 128
+                   : mode == 9 ? (c.texel - Vec3{127, 127, 127}) / 128
+                               : c.texel * 2.0 / 255 - Vec3{1, 1, 1};
     const Vec3 r = unit_or_zero(tp * m.x + bp * (mode == 5 ? -m.y : m.y) + n * m.z);
     return r == Vec3{} ? n : r;
 }
@@ -370,6 +374,11 @@ enum class Lookup {
     kPcfAhead,    // the PCF kernel off centre: offsets 0, 1, 2 instead of -1, 0, 1
     kPcfBehind,   // the PCF kernel off centre: offsets -2, -1, 0
     kRounded,     // the texel by rounding, floor(x + 0.5), not floor(x)
+    kRoundedDown, // the same, a hair below: a point at a texel's center (x + 0.5 whole) may round either way
+    kGridShort,   // the texel from to_screen on a (resolution - 1)^2 grid: x = (x_ndc + 1) / 2 * (resolution - 1)
+    kPcfOver8,    // the lit count of the 3x3 divided by 8 (9 of 9 lit taken as 1, as a min(1, ...) keeps it)
+    kPcf2x2,      // a 2x2 kernel, offsets 0 and 1, lit / 4
+    kPcf2x2Behind,  // a 2x2 kernel, offsets -1 and 0, lit / 4
 };
 
 // The bias of a shadow case in world units: constant + slope * min(tan(theta), 10), with
@@ -395,8 +404,9 @@ double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::k
     const M4 m = t_light(map.direction, map.center, map.radius);
     const Vec4 clip = mul(m, Vec4{c.p.x, c.p.y, c.p.z, 1});
     const double res = map.resolution;
-    const double x = (clip.x / clip.w + 1) / 2 * res, z = clip.z / clip.w;
-    const double y = mode == Lookup::kUnflipped ? (clip.y / clip.w + 1) / 2 * res : (1 - clip.y / clip.w) / 2 * res;
+    const double grid = mode == Lookup::kGridShort ? res - 1 : res;
+    const double x = (clip.x / clip.w + 1) / 2 * grid, z = clip.z / clip.w;
+    const double y = mode == Lookup::kUnflipped ? (clip.y / clip.w + 1) / 2 * grid : (1 - clip.y / clip.w) / 2 * grid;
     const double d = mode == Lookup::kNdcDepth ? z : (z + 1) / 2;
     const double bias = t_bias(map, c, mode);
     const double test = mode == Lookup::kBiasAdded   ? d + bias / (2 * map.radius)
@@ -413,15 +423,23 @@ double t_shadow(const TinyMap& map, const ShadowCase& c, Lookup mode = Lookup::k
                                                               : test > stored;
         return shadowed ? 0.0 : 1.0;
     };
-    const double half = mode == Lookup::kRounded ? 0.5 : 0;
+    const double half = mode == Lookup::kRounded ? 0.5 : mode == Lookup::kRoundedDown ? 0.5 - 1e-9 : 0;
     const double col = std::floor(x + half), row = std::floor(y + half);
     if (!c.pcf) return lit(col, row);
+    if (mode == Lookup::kPcf2x2 || mode == Lookup::kPcf2x2Behind) {
+        const int from = mode == Lookup::kPcf2x2 ? 0 : -1;
+        double quad = 0;
+        for (int dy = from; dy <= from + 1; ++dy) {
+            for (int dx = from; dx <= from + 1; ++dx) quad += lit(col + dx, row + dy);
+        }
+        return quad / 4;
+    }
     const int shift = mode == Lookup::kPcfAhead ? 1 : mode == Lookup::kPcfBehind ? -1 : 0;
     double sum = 0;
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) sum += lit(col + dx + shift, row + dy + shift);
     }
-    return sum / 9;
+    return mode == Lookup::kPcfOver8 ? std::min(1.0, sum / 8) : sum / 9;  // (with or without the min, when all nine are lit)
 }
 
 // ---- the number groups ----
@@ -576,7 +594,17 @@ void judge_mipmaps(Ctx& c) {
                 const int ti = int(i) % l.width, tj = int(i) / l.width;
                 std::string msg = "TODO 3: level " + std::to_string(k) + " (" + size_name(l) + ") of " + name + ": texel (" +
                                   std::to_string(ti) + ", " + std::to_string(tj) + ") is " + str(mine) + ", expected " + str(l.texels[i]);
-                if (k == 0) {
+                // Whole numbers where the average is not: the average rounded (or cut) to a level.
+                const auto whole_of = [&](double (*f)(double)) {
+                    const Vec3 w{f(l.texels[i].x), f(l.texels[i].y), f(l.texels[i].z)};
+                    return same3(mine, w, 1e-9) && !same3(w, l.texels[i], 1e-9);
+                };
+                if (k > 0 && (whole_of([](double x) { return std::round(x); }) || whole_of([](double x) { return std::floor(x); }) ||
+                              whole_of([](double x) { return std::nearbyint(x); }))) {
+                    msg += ": yours is the average made a whole number. A level's texels are Vec3 of doubles (levels "
+                           "0-255, not bytes): keep the plain average of the 2x2 block as it is, unrounded (rounding at "
+                           "every level adds up down the pyramid)";
+                } else if (k == 0) {
                     msg += ": level 0 is the texture itself and stays as it is";
                 } else {
                     const LevelData& up = want[k - 1];
@@ -655,6 +683,14 @@ void judge_lod(Ctx& c) {
         } else if (is_affine) {
             why = ": those are the derivatives of the SCREEN-space interpolation; uv is A / B (perspective-correct), "
                   "so du/dx = (A_x B - A B_x) / B^2";
+        } else if (const auto same = [&](int n, double sign) { return std::abs(mine[n] - sign * want[n]) <= 1e-6 * scale; };
+                   (same(0, 1) && same(1, 1) && same(2, -1) && same(3, -1) && (want[2] != 0 || want[3] != 0)) ||
+                   (same(0, -1) && same(1, -1) && same(2, 1) && same(3, 1) && (want[0] != 0 || want[1] != 0))) {
+            const bool y = same(2, -1) && (want[2] != 0 || want[3] != 0);
+            why = std::string(": the ") + (y ? "y" : "x") + " derivatives have the wrong SIGN: they are the change of "
+                  "u and v as the pixel center moves one pixel toward +" + (y ? "y (DOWN the screen, y grows downward)" : "x") +
+                  "; differentiate the screen weights l_i(x, y) as they are, without flipping the " + (y ? "y" : "x") +
+                  " axis (the sign does not change lambda, but it is the derivative the header asks for)";
         } else {
             why = " (the exact derivative of A / B: du/dx = (A_x B - A B_x) / B^2, with A = sum l_i u_i / w_i, B = "
                   "sum l_i / w_i and l_i the screen weights)";
@@ -833,6 +869,12 @@ Vec3 unnormalized_phong(const PhongCase& k) {
     return mul(k.base, k.intensity) * c + mul(k.specular, k.intensity) * s;
 }
 
+// Blinn-Phong with the specular term from the halfway vector normalize(h), N and L unit.
+Vec3 phong_with_halfway(const PhongCase& k, Vec3 h) {
+    const Vec3 n = unit_or_zero(k.normal);
+    return with_specular_base(k, raster::dot(n, unit_or_zero(h)));
+}
+
 // The exponent that `mine`'s specular part was raised with, when its diffuse part is right, every
 // channel agrees on it and it is not the shininess asked for; NaN otherwise.
 double implied_shininess(const PhongCase& k, Vec3 mine) {
@@ -896,9 +938,29 @@ void judge_phong(Ctx& c) {
                                       : "Phong's dot(R, V), R = 2 dot(N, L) N - L, the mirror direction") +
                   "; Blinn-Phong's is max(0, dot(N, H))^shininess, H = normalize(L + V), the halfway vector between the "
                   "directions to the light and to the eye";
+        } else if (const Vec3 diffuse = mul(k.base, k.intensity) * cl;
+                   cl > 0 && !same3(want, diffuse, 1e-9) && same3(mine, diffuse + mul(want - diffuse, k.base / 255.0), 1e-9)) {
+            why = ": the diffuse part is right, but the specular part was tinted by the base color (times base / 255): "
+                  "a highlight is the light's color times the material's own specular color, specular * "
+                  "max(0, dot(N, H))^shininess * I, with no base in it (white plastic under a white light shines white)";
+        } else if (const Vec3 l = unit_or_zero(k.to_light), e = unit_or_zero(k.to_eye);
+                   cl > 0 && ((k.to_light != l && same3(mine, phong_with_halfway(k, k.to_light + e), 1e-9)) ||
+                              (k.to_eye != e && same3(mine, phong_with_halfway(k, l + k.to_eye), 1e-9)) ||
+                              ((k.to_light != l || k.to_eye != e) &&
+                               same3(mine, phong_with_halfway(k, k.to_light + k.to_eye), 1e-9)))) {
+            // L or V added into H before it was normalized (here they are not of length 1).
+            topic = "halfway vector";
+            why = ": the diffuse part is right, but H was built from L or V before normalizing them (here L is " +
+                  num(raster::length(k.to_light)) + " and V " + num(raster::length(k.to_eye)) +
+                  " long): H = normalize(L + V) is halfway between the two only when both have length 1, so normalize "
+                  "L and V first, then add them";
         } else if (const double s = implied_shininess(k, mine); cl > 0 && std::isfinite(s)) {
             why = ": the diffuse part is right and the specular part is max(0, dot(N, H))^" + num(s) +
-                  ", not ^shininess (" + num(k.shininess) + "): raise dot(N, H) to the material's shininess itself";
+                  ", not ^shininess (" + num(k.shininess) + ")" +
+                  (k.shininess != std::floor(k.shininess) && (s == std::floor(k.shininess) || s == std::round(k.shininess))
+                       ? ": the shininess was made a whole number; it is a double (a loop of multiplications, or "
+                         "repeated squaring, gives only whole powers: use std::pow where it is not whole)"
+                       : ": raise dot(N, H) to the material's shininess itself");
         } else if (const double nh = raster::dot(unit_or_zero(k.normal),
                                                  unit_or_zero(unit_or_zero(k.to_light) + unit_or_zero(k.to_eye)));
                    cl > 0 && nh < 0 && !same3(mine, want, 1e-9)) {
@@ -979,6 +1041,19 @@ void judge_tangent(Ctx& c) {
         } else if (raw_frame) {
             why = ": T and B were used as they are; make the frame orthonormal: T' = normalize(T - n dot(n, T)), "
                   "B' = cross(n, T') (negated when it points away from B)";
+        } else if (same3(mine, t_perturb(k, 6), 1e-9)) {
+            why = ": T' is T only normalized, not made orthogonal to n first: T' = normalize(T - n dot(n, T)) "
+                  "(Gram-Schmidt). Here T leans out of the surface's plane (dot(n, T) = " +
+                  num(round4(raster::dot(k.n, k.tangent))) + "), and a T' that is not perpendicular to n tilts every "
+                  "bump out of the surface";
+        } else if (const int decode = same3(mine, t_perturb(k, 7), 1e-9)   ? 7
+                                      : same3(mine, t_perturb(k, 8), 1e-9) ? 8
+                                      : same3(mine, t_perturb(k, 9), 1e-9) ? 9
+                                                                            : 0) {
+            why = std::string(": the texel was decoded as ") +
+                  (decode == 7 ? "(t - 128) / 127" : decode == 8 ? "(t - 128) / 128" : "(t - 127) / 128") +
+                  "; the header's decode is 2 t / 255 - 1 = (t - 127.5) / 127.5, which takes 0 to -1, 255 to +1 and "
+                  "127.5 to 0 exactly";
         } else if (green_flipped) {
             why = ": the texel's green channel tilted the normal along -B' (green up the image, as OpenGL's normal "
                   "maps have it); here green runs along +B', the way v grows, DOWN the image: m.y multiplies B' as it "
@@ -1080,13 +1155,49 @@ void judge_shadow(Ctx& c) {
         return changes;
     };
     const bool pcf_ahead = pcf_fits(Lookup::kPcfAhead), pcf_behind = pcf_fits(Lookup::kPcfBehind);
-    // The texel by rounding: every case, with and without PCF, as floor(x + 0.5) reads it.
-    const bool rounded = fits(Lookup::kRounded) && (pcf_fits(Lookup::kRounded) || [&] {
+    // Divided by 8: every PCF case lit / 8, where all nine lit gives 9 / 8 or 1 (a min keeps it).
+    const bool pcf_over_8 = [&] {
+        bool changes = false;
         for (std::size_t i = 0; i < cases.size(); ++i) {
-            if (cases[i].pcf && !close(get(v, "shadow" + std::to_string(i)), t_shadow(map, cases[i]), 1e-9)) return false;
+            if (!cases[i].pcf) continue;
+            const double mine = get(v, "shadow" + std::to_string(i)), right = t_shadow(map, cases[i]);
+            const double eighths = t_shadow(map, cases[i], Lookup::kPcfOver8);
+            if (!close(mine, eighths, 1e-9) && !(right == 1 && close(mine, 9.0 / 8, 1e-9))) return false;
+            changes |= !close(mine, right, 1e-9);
         }
-        return true;
-    }());
+        return changes;
+    }();
+    // A mistake in finding the texel that explains every case, with and without PCF (the PCF
+    // cases may also be right), and changes one of them. Rounding: the cases' points lie at
+    // texel centers, where x + 0.5 is whole and a rounding the last bit below it (to_screen's
+    // arithmetic is not the judge's) reads the texel before: either is the same mistake.
+    // Whether case i's point lies at a texel's center along x or y (x + 0.5 whole); with
+    // `positive`, only where x and y are both above 0 (there a cast to int agrees with floor).
+    auto at_center = [&](std::size_t i, bool positive = false) {
+        const Vec4 q = mul(t_light(map.direction, map.center, map.radius), Vec4{cases[i].p.x, cases[i].p.y, cases[i].p.z, 1});
+        const double x = (q.x / q.w + 1) / 2 * map.resolution, y = (1 - q.y / q.w) / 2 * map.resolution;
+        const auto center = [](double t) { return std::abs(t + 0.5 - std::round(t + 0.5)) < 1e-9; };
+        return (center(x) || center(y)) && (!positive || (x > 0 && y > 0));
+    };
+    auto is_mode = [&](std::size_t i, Lookup mode) {
+        const double mine = get(v, "shadow" + std::to_string(i));
+        return close(mine, t_shadow(map, cases[i], mode), 1e-9) ||
+               (mode == Lookup::kRounded && at_center(i) && close(mine, t_shadow(map, cases[i], Lookup::kRoundedDown), 1e-9));
+    };
+    auto texel_fits = [&](Lookup mode) {
+        // Rounding must show where only it can: a point at a texel's center right of 0 read in
+        // the NEXT texel (a cast to int, or floor, never does that; left of 0 a cast does too).
+        bool changes = false, plain = true, rounds_up = mode != Lookup::kRounded;
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            const double mine = get(v, "shadow" + std::to_string(i)), right = t_shadow(map, cases[i]);
+            if (!is_mode(i, mode) && !(cases[i].pcf && close(mine, right, 1e-9))) return false;
+            plain &= cases[i].pcf || is_mode(i, mode);
+            changes |= !close(mine, right, 1e-9);
+            rounds_up |= at_center(i, true) && !close(mine, right, 1e-9);
+        }
+        return changes && plain && rounds_up;
+    };
+    const bool rounded = texel_fits(Lookup::kRounded), grid_short = texel_fits(Lookup::kGridShort);
     Limited out{c, "shadow_factor", 0, 0, "shadow", "8"};
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const auto& k = cases[i];
@@ -1098,7 +1209,15 @@ void judge_shadow(Ctx& c) {
                               close(get(v, "shadow1"), t_shadow(map, cases[1], Lookup::kReversed), 1e-9) &&
                               !close(get(v, "shadow0"), t_shadow(map, cases[0]), 1e-9);
         const double bias = t_bias(map, k), depth_bias = bias / (2 * map.radius);
-        if (rounded && close(mine, t_shadow(map, k, Lookup::kRounded), 1e-9)) {
+        if (grid_short) {
+            topic = "shadow";  // PCF cases too: the texel is wrong before any is counted
+            const Vec4 q = mul(t_light(map.direction, map.center, map.radius), Vec4{k.p.x, k.p.y, k.p.z, 1});
+            const double x = (q.x / q.w + 1) / 2 * map.resolution;
+            why = ": every case comes out as if the texel were found on a " + num(map.resolution - 1) + " x " +
+                  num(map.resolution - 1) + " grid: NDC -1 .. 1 spans all " + num(map.resolution) +
+                  " texels, so x = (x_ndc + 1) / 2 * resolution (here " + num(round4(x)) + ", column " +
+                  num(std::floor(x)) + "): m3::to_screen(light * p, resolution, resolution), as the depth pass drew it";
+        } else if (rounded && is_mode(i, Lookup::kRounded)) {
             const Vec4 q = mul(t_light(map.direction, map.center, map.radius), Vec4{k.p.x, k.p.y, k.p.z, 1});
             const double x = (q.x / q.w + 1) / 2 * map.resolution;
             why = ": the texel is found by ROUNDING: x = " + num(round4(x)) + " lies in column " + num(std::floor(x)) +
@@ -1154,6 +1273,12 @@ void judge_shadow(Ctx& c) {
         } else if (fits(Lookup::kUnflipped) && close(mine, t_shadow(map, k, Lookup::kUnflipped), 1e-9)) {
             why = ": the map is read upside down: the texel's row is floor(y) of m3::to_screen, which flips NDC y "
                   "(y = (1 - y_ndc) / 2 * resolution, row 0 at the top, as the depth pass drew it)";
+        } else if (k.pcf && pcf_over_8) {
+            why = ": every PCF case comes out as the lit texels of the 3x3 divided by 8: a 3x3 has NINE texels (the "
+                  "center one too), so the factor is lit / 9";
+        } else if (k.pcf && (pcf_fits(Lookup::kPcf2x2) || pcf_fits(Lookup::kPcf2x2Behind))) {
+            why = ": every PCF case comes out as a 2x2 kernel (four texels, lit / 4): the header's PCF is the 3x3 "
+                  "texels around the one p falls in, offsets -1, 0, 1 along each axis, lit / 9";
         } else if (k.pcf && (pcf_ahead || pcf_behind)) {
             why = std::string(": every PCF case comes out as a 3x3 kernel OFF CENTRE, texels ") +
                   (pcf_ahead ? "col .. col + 2 and row .. row + 2 (offsets 0, 1, 2)" : "col - 2 .. col and row - 2 .. row (offsets -2, -1, 0)") +
@@ -2442,8 +2567,24 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 why += "; a normal map is read with sample_bilinear on its level 0, never through sample(), so it never "
                        "gets a pyramid";
             }
+            if (name == "specular_terms" && a > b) {
+                why += "; a material whose specular color is zero (0, 0, 0) has no specular term at all (the header's "
+                       "Material: \"zero: no specular term is computed\"), so its fragments count none";
+            }
             c.add(topic, todo + ": " + plural(a, st.one, st.what) + where + ", expected " +
                              (st.exact || b == 0 ? num(b) : "about " + num(b)) + why);
+            // The hint of a count is what makes that count, not the rule of the function it counts.
+            if (name == "specular_terms" && a > b) {
+                c.j.findings.back().hint = "fill_triangle computes (and counts) a specular term only for a material whose "
+                                           "specular color is not zero, and only where the light arrives, dot(N, L) > 0";
+            } else if ((name == "specular_terms" || name == "shadow_lookups") && a < b) {
+                c.j.findings.back().hint =
+                    std::string(name == "shadow_lookups" ? "fill_triangle looks light k up in its own map, state.shadow_maps[k], "
+                                                         : "fill_triangle adds a light's specular term ") +
+                    "wherever dot(N, L) > 0; where the counts fall short, N or L is not the one the header asks for: N "
+                    "the world normal (draw_scene: m4::normal_matrix, normalized), interpolated, normalized and "
+                    "perturbed; L = -normalize(direction)";
+            }
         }
         if (!sized) continue;
         if (!panel.screen_tris.empty()) judge_screen_uv(c, *mine, ref, panel);

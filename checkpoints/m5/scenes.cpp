@@ -1180,6 +1180,7 @@ std::vector<PhongCase> phong_cases() {
         {base, spec, 16, {0, 0, 1}, {0, -0.6, -0.8}, {0, 0.6, 0.8}, one},         // V = -L: H is zero
         {base, spec, 1, {0, 0, 1}, {0.8, 0, 0.6}, {-0.8, 0, 0.6}, one},           // shininess 1
         {base, spec, 32, {0, 0, 1}, {-1, 0, -0.5}, {1, 0, 0.05}, one},            // c > 0 but dot(N, H) < 0: no specular
+        {base, spec, 12.5, {0, 0, 1}, {0, 0, 1}, {0, std::sqrt(3.0), 1}, one},   // a shininess that is not whole
     };
     if (variant_seed() != 0) {
         Rng rng(variant_seed(), "m5.blinn_phong");
