@@ -66,6 +66,8 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"pcf", {"TODO 8", "the lit fraction of the 3x3 texels around the one the point falls in"}},
         {"needs", {"TODO 9", "run only the passes a scene needs: no sampling without a texture, no shadow pass without a casting light"}},
         {"pipeline", {"TODO 9", "follow draw_scene's steps in textures_shadows.h and count each as Stats says"}},
+        {"normals", {"TODOs 5 and 9", "each vertex's world normal is m4::normal_matrix(model) times it, normalized (draw_scene); "
+                                      "a fragment's is those interpolated with the perspective-correct weights, normalized (fill_triangle)"}},
         {"bad input", {"TODO 9", "skip triangles with an index out of range or a non-finite clip coordinate"}},
     };
 }

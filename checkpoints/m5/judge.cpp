@@ -1930,6 +1930,10 @@ AmbientOffset ambient_offset_diff(const Scene& s, const raster::Image& mine, con
                 for (std::size_t k = 0; k < offsets.size(); ++k) {
                     const Vec3 o = offsets[k].first;
                     const auto fits = [](int got, int want, double off) {
+                        // An expected 255 (or 0) was clamped: the value under it may lie anywhere
+                        // above (below), so the offset one may too.
+                        if (want >= 255) return got >= std::min(255.0, 255 + off) - 2;
+                        if (want <= 0) return got <= std::max(0.0, off) + 2;
                         const double target = want + off;
                         if (target >= 254) return got >= 253;  // clamped at white
                         if (target <= 1) return got <= 2;      // clamped at black
@@ -2084,6 +2088,10 @@ std::pair<std::string, std::string> picture_theme(const std::string& id) {
         {"m5.specular_spheres",
          {"specular", "TODO 5: fill_triangle normalizes the interpolated normal, takes V = eye - world position, and adds "
                       "the ambient term once and blinn_phong for each light"}},
+        {"m5.squashed_sphere",
+         {"normals", "TODOs 5 and 9: draw_scene turns each vertex normal with m4::normal_matrix(model) and normalizes "
+                     "it BEFORE it is interpolated (under a non-uniform scale the turned normals differ in length); "
+                     "fill_triangle interpolates it with the perspective-correct weights and normalizes it once more"}},
         {"m5.normal_map",
          {"normal map", "TODOs 5 and 9: draw_scene computes each mesh triangle's tangent_frame from its WORLD positions "
                         "and uv; fill_triangle perturbs the normalized normal with the normal map's bilinear level-0 "

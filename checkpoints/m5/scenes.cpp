@@ -522,6 +522,26 @@ std::vector<Scene> build() {
         add(s);
     }
     {
+        // A non-uniform scale makes m4::normal_matrix's normals of different lengths: along y
+        // (squashed to 0.5) twice as long as unit, along x (stretched to 1.7) less than 0.6. On a
+        // coarse sphere each triangle spans a wide turn of the normal, so normals interpolated
+        // before they are normalized lean toward the long ones, and the highlights move.
+        Scene s = picture("m5.squashed_sphere",
+                          "A coarse sphere squashed to an ellipsoid, lit with highlights: world normals normalized",
+                          "draw_scene turns each vertex normal with m4::normal_matrix(model) and NORMALIZES it before "
+                          "it is interpolated: under a non-uniform scale the turned normals have different lengths, and "
+                          "interpolating them as they are leans every fragment's normal toward the longer ones",
+                          {9, 5, 6}, 128, 96);
+        Item ball = item(uv_sphere(10), plain({90, 150, 210}, {220, 220, 220}, 12));
+        ball.size = {1.7, 0.5, 1.0};
+        ball.axis = {0, 1, 0};
+        ball.angle = 0.3;
+        Panel pn = panel(cam({0.02, 1.0, 3.1}, {0.01, -0.05, 0}), {ball}, {}, 0, 0, 128, 96);
+        pn.lights = {sun({-0.4, -0.8, -0.6}, {0.75, 0.75, 0.75}), sun({0.7, -0.1, -0.5}, {0.35, 0.3, 0.25})};
+        s.panels.push_back(pn);
+        add(s);
+    }
+    {
         Scene s = picture("m5.normal_map",
                           "Normal-mapped: a quad with sheared uv, one square but turned, a coarse prism with smooth "
                           "normals, a quad whose map clamps u and mirrors v, and a textured quad (nearest) on a coarse "
