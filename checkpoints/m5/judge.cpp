@@ -1167,17 +1167,22 @@ void judge_shadow(Ctx& c) {
         }
         return changes;
     }();
+    // A point's position on the map in texels: m3::to_screen's x and y of light * p.
+    const M4 light = t_light(map.direction, map.center, map.radius);
+    auto on_map = [&](Vec3 p) {
+        const Vec4 q = mul(light, Vec4{p.x, p.y, p.z, 1});
+        return Vec2{(q.x / q.w + 1) / 2 * map.resolution, (1 - q.y / q.w) / 2 * map.resolution};
+    };
     // A mistake in finding the texel that explains every case, with and without PCF (the PCF
     // cases may also be right), and changes one of them. Rounding: the cases' points lie at
     // texel centers, where x + 0.5 is whole and a rounding the last bit below it (to_screen's
     // arithmetic is not the judge's) reads the texel before: either is the same mistake.
-    // Whether case i's point lies at a texel's center along x or y (x + 0.5 whole); with
-    // `positive`, only where x and y are both above 0 (there a cast to int agrees with floor).
+    // at_center: whether case i's point lies at a texel's center along x or y; with `positive`,
+    // only where x and y are both above 0 (there a cast to int agrees with floor).
     auto at_center = [&](std::size_t i, bool positive = false) {
-        const Vec4 q = mul(t_light(map.direction, map.center, map.radius), Vec4{cases[i].p.x, cases[i].p.y, cases[i].p.z, 1});
-        const double x = (q.x / q.w + 1) / 2 * map.resolution, y = (1 - q.y / q.w) / 2 * map.resolution;
+        const Vec2 xy = on_map(cases[i].p);
         const auto center = [](double t) { return std::abs(t + 0.5 - std::round(t + 0.5)) < 1e-9; };
-        return (center(x) || center(y)) && (!positive || (x > 0 && y > 0));
+        return (center(xy.x) || center(xy.y)) && (!positive || (xy.x > 0 && xy.y > 0));
     };
     auto is_mode = [&](std::size_t i, Lookup mode) {
         const double mine = get(v, "shadow" + std::to_string(i));
@@ -1211,15 +1216,13 @@ void judge_shadow(Ctx& c) {
         const double bias = t_bias(map, k), depth_bias = bias / (2 * map.radius);
         if (grid_short) {
             topic = "shadow";  // PCF cases too: the texel is wrong before any is counted
-            const Vec4 q = mul(t_light(map.direction, map.center, map.radius), Vec4{k.p.x, k.p.y, k.p.z, 1});
-            const double x = (q.x / q.w + 1) / 2 * map.resolution;
+            const double x = on_map(k.p).x;
             why = ": every case comes out as if the texel were found on a " + num(map.resolution - 1) + " x " +
                   num(map.resolution - 1) + " grid: NDC -1 .. 1 spans all " + num(map.resolution) +
                   " texels, so x = (x_ndc + 1) / 2 * resolution (here " + num(round4(x)) + ", column " +
                   num(std::floor(x)) + "): m3::to_screen(light * p, resolution, resolution), as the depth pass drew it";
         } else if (rounded && is_mode(i, Lookup::kRounded)) {
-            const Vec4 q = mul(t_light(map.direction, map.center, map.radius), Vec4{k.p.x, k.p.y, k.p.z, 1});
-            const double x = (q.x / q.w + 1) / 2 * map.resolution;
+            const double x = on_map(k.p).x;
             why = ": the texel is found by ROUNDING: x = " + num(round4(x)) + " lies in column " + num(std::floor(x)) +
                   " = floor(x), and floor(x + 0.5) reads column " + num(std::floor(x + 0.5)) +
                   ". Texel (col, row) covers [col, col + 1) x [row, row + 1), its center at col + 0.5 (as the depth "
@@ -2575,24 +2578,23 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                 why += "; a normal map is read with sample_bilinear on its level 0, never through sample(), so it never "
                        "gets a pyramid";
             }
+            // The hint of a count is what makes that count, not the rule of the function it counts.
+            std::string hint;
             if (name == "specular_terms" && a > b) {
                 why += "; a material whose specular color is zero (0, 0, 0) has no specular term at all (the header's "
                        "Material: \"zero: no specular term is computed\"), so its fragments count none";
+                hint = "fill_triangle computes (and counts) a specular term only for a material whose specular color is "
+                       "not zero, and only where the light arrives, dot(N, L) > 0";
+            } else if ((name == "specular_terms" || name == "shadow_lookups") && a < b) {
+                hint = std::string(name == "shadow_lookups" ? "fill_triangle looks light k up in its own map, state.shadow_maps[k], "
+                                                            : "fill_triangle adds a light's specular term ") +
+                       "wherever dot(N, L) > 0; where the counts fall short, N or L is not the one the header asks for: N "
+                       "the world normal (draw_scene: m4::normal_matrix, normalized), interpolated, normalized and "
+                       "perturbed; L = -normalize(direction)";
             }
             c.add(topic, todo + ": " + plural(a, st.one, st.what) + where + ", expected " +
                              (st.exact || b == 0 ? num(b) : "about " + num(b)) + why);
-            // The hint of a count is what makes that count, not the rule of the function it counts.
-            if (name == "specular_terms" && a > b) {
-                c.j.findings.back().hint = "fill_triangle computes (and counts) a specular term only for a material whose "
-                                           "specular color is not zero, and only where the light arrives, dot(N, L) > 0";
-            } else if ((name == "specular_terms" || name == "shadow_lookups") && a < b) {
-                c.j.findings.back().hint =
-                    std::string(name == "shadow_lookups" ? "fill_triangle looks light k up in its own map, state.shadow_maps[k], "
-                                                         : "fill_triangle adds a light's specular term ") +
-                    "wherever dot(N, L) > 0; where the counts fall short, N or L is not the one the header asks for: N "
-                    "the world normal (draw_scene: m4::normal_matrix, normalized), interpolated, normalized and "
-                    "perturbed; L = -normalize(direction)";
-            }
+            if (!hint.empty()) c.j.findings.back().hint = hint;
         }
         if (!sized) continue;
         if (!panel.screen_tris.empty()) judge_screen_uv(c, *mine, ref, panel);
