@@ -48,6 +48,9 @@ public:
     // Counts the pixel when the predictions tell apart; returns whether they did.
     bool cast(raster::Color got, raster::Color right, raster::Color wrong);
     bool names_mistake() const { return mistake_like_ >= 10 && mistake_like_ > rule_like_; }
+    // The telling pixels that matched the mistake: of two votes that both name theirs, the
+    // larger count is the nearer mistake.
+    long long mistake_like() const { return mistake_like_; }
     // "at <mistake-like> of <telling> pixels", for the finding's text.
     std::string tally() const;
 

@@ -2250,7 +2250,8 @@ void judge_screen_uv(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref
     const double area = (t.screen[1].x - t.screen[0].x) * (t.screen[2].y - t.screen[0].y) -
                         (t.screen[1].y - t.screen[0].y) * (t.screen[2].x - t.screen[0].x);
     if (area == 0) return;
-    cp::PixelVote screen_space;
+    // Both coordinates by the screen weights, or only one of them (the other perspective-correct).
+    cp::PixelVote screen_space, u_only, v_only;
     for (int y = 0; y < panel.h; ++y) {
         for (int x = 0; x < panel.w; ++x) {
             const double px = x + 0.5, py = y + 0.5;
@@ -2270,13 +2271,26 @@ void judge_screen_uv(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref
             const Color pc = to_color(t_nearest(level, persp, spec->wrap_u, spec->wrap_v));
             const Color sc = to_color(t_nearest(level, flat, spec->wrap_u, spec->wrap_v));
             if (max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), pc) > 3) continue;
-            screen_space.cast(mine.at(panel.x0 + x, panel.y0 + y), pc, sc);
+            const Color got = mine.at(panel.x0 + x, panel.y0 + y);
+            screen_space.cast(got, pc, sc);
+            u_only.cast(got, pc, to_color(t_nearest(level, {flat.x, persp.y}, spec->wrap_u, spec->wrap_v)));
+            v_only.cast(got, pc, to_color(t_nearest(level, {persp.x, flat.y}, spec->wrap_u, spec->wrap_v)));
         }
     }
-    if (screen_space.names_mistake()) {
+    const cp::PixelVote* best = nullptr;
+    for (const cp::PixelVote* v : {&screen_space, &u_only, &v_only}) {
+        if (v->names_mistake() && (!best || v->mistake_like() > best->mistake_like())) best = v;
+    }
+    if (best == &screen_space) {
         c.add("perspective uv", "TODO 5: " + screen_space.tally() +
                                     " inside the first triangle your texels are those of the SCREEN-space uv: weigh "
                                     "each vertex's uv by l_i / w_i and normalize (m4::perspective_weights)");
+    } else if (best) {
+        const bool u = best == &u_only;
+        c.add("perspective uv", "TODO 5: " + best->tally() + " inside the first triangle your texels are those of a uv " +
+                                    "whose " + (u ? "u" : "v") + " is interpolated with the SCREEN weights l_i and whose " +
+                                    (u ? "v" : "u") + " is perspective-correct: both coordinates take the same " +
+                                    "weights, m4::perspective_weights of l_i and w_i");
     }
     judge_depth_ties(c, mine, ref, panel);
     judge_lod_center(c, mine, ref, panel);
