@@ -225,12 +225,13 @@ int cmd_judge(const std::vector<std::string>& args) {
     try {
         student = cp::read_artifacts(artifacts_dir.string(), cp::rules_from_reference(reference));
     } catch (const cp::ArtifactError& e) {
-        if (early.empty()) {
-            early.push_back(cp::unreadable_artifacts_finding(e.what()));
-            unreadable = true;
-        }
+        // Told once: after a crash or a timeout the missing output is that failure's echo, and
+        // judging none would only report every value the program never wrote ("gave nan").
+        if (early.empty()) early.push_back(cp::unreadable_artifacts_finding(e.what()));
+        unreadable = true;
         student = cp::Artifacts{};
     }
+    const bool render_failed = !early.empty();
     // Graded: the verdict on what the trusted side can check; what only the counts said is advice.
     // (When the render itself failed, that is the verdict and the whole one is kept below.)
     cp::GradedVerdict judged = cp::judge_for_grading(s, id, student, reference, expected);
@@ -282,6 +283,7 @@ int cmd_judge(const std::vector<std::string>& args) {
               {"diagnosis", r.diagnosis},
               {"todos", r.todos},
               {"student_ms", r.student_ms},
+              {"render_failed", render_failed},  // then student_ms timed nothing
               {"reference_ms", r.reference_ms},
               {"tolerated", r.tolerated},
               {"tolerated_why", r.tolerated_why},
@@ -437,8 +439,13 @@ std::string checkpoint_output(const json& v, const std::string& why) {
     }
     if (!why.empty()) o << "\n" << why;
     if (v.contains("student_ms")) {  // (nothing was timed where nothing was built)
-        o << std::fixed << std::setprecision(3) << "\nrender time: yours " << v.value("student_ms", 0.0)
-          << " ms, reference " << v.value("reference_ms", 0.0) << " ms";
+        o << std::fixed << std::setprecision(3) << "\nrender time: yours ";
+        if (v.value("render_failed", false)) {
+            o << "none (the render did not finish)";
+        } else {
+            o << v.value("student_ms", 0.0) << " ms";
+        }
+        o << ", reference " << v.value("reference_ms", 0.0) << " ms";
     }
     if (v.value("numbers_only", false)) {
         o << "\nno picture to compare: this checkpoint judges numbers";
@@ -528,7 +535,13 @@ int cmd_report(const std::vector<std::string>& args) {
                  << "</a></td><td class=\"" << (status == "pass" ? "pass" : "fail") << "\">" << html_escape(status)
                  << "</td><td>" << fmt_points(got) << " / " << fmt_points(max) << "</td><td>"
                  << html_escape(join(v.value("concepts", std::vector<std::string>{}), ", ")) << "</td><td>"
-                 << std::fixed << std::setprecision(3) << v.value("student_ms", 0.0) << "</td><td>"
+                 << std::fixed << std::setprecision(3);
+            if (v.value("render_failed", false)) {
+                rows << "&mdash;";  // the render did not finish: nothing was timed
+            } else {
+                rows << v.value("student_ms", 0.0);
+            }
+            rows << "</td><td>"
                  << v.value("reference_ms", 0.0) << "</td><td>"
                  << (v.value("has_metrics", false) && !v.value("numbers_only", false)
                          ? std::to_string(v["student"].value("differing_pixels", 0LL))

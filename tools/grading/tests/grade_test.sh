@@ -240,6 +240,20 @@ PY
         grep -q "could not be used" "$r" || fail "the unreadable PNG was not named: $(cat "$r")"
         if grep -q "produced no main image" "$r"; then fail "an unreadable PNG was told twice: $(cat "$r")"; fi
       fi
+      # A render killed at its deadline wrote nothing: the kill is the one finding (not also each
+      # value or image it never wrote), and no render time is shown for it.
+      if [ "$attack" = endless_ignoring_term ] && [ "$check" = without ]; then
+        python3 - "$r" <<'PY' || fail "a render that was killed got more than its one finding"
+import json, sys
+for t in json.load(open(sys.argv[1]))['tests']:
+    if not t['name'].startswith('m1 m1.'):
+        continue
+    o = t['output']
+    found = [l for l in o.split('hint:')[0].splitlines() if l.startswith('  [')]
+    assert len(found) == 1 and found[0].startswith('  [time limit]'), o
+    assert 'render time: yours none (the render did not finish)' in o, o
+PY
+      fi
       check_clean
     done
     ;;
