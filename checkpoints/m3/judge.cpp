@@ -1083,9 +1083,88 @@ void judge_group(Group g, Ctx& c) {
     }
 }
 
+// A line of the wireframe whose end lies on a pixel boundary, most often one that clip_line cut
+// at a side of the view: its end is then exactly at x = 0 or W (or y = 0 or H), and m1 snaps an
+// end to the center of the pixel containing it, so x = 96 and 95.99999999 (the same point by
+// another correct order of operations) start the line in neighbouring pixels and the whole line
+// may take the neighbouring path. Marks every pixel within a pixel of each such path. The
+// segments come from the reference's own matrices (its values, "panel0.model1").
+void mark_ambiguous_line_ends(const Scene& s, const Values& ref, raster::Mask& lenient) {
+    if (!s.wireframe) return;
+    auto apply = [](const Matrix& m, Vec3 p) {
+        double r[4];
+        for (int i = 0; i < 4; ++i) r[i] = m[i][0] * p.x + m[i][1] * p.y + m[i][2] * p.z + m[i][3];
+        return Vec4{r[0], r[1], r[2], r[3]};
+    };
+    auto dist = [](Vec4 p, int plane) {  // >= 0 inside: -w <= x, y, z <= w
+        const double c = plane / 2 == 0 ? p.x : plane / 2 == 1 ? p.y : p.z;
+        return plane % 2 == 0 ? p.w + c : p.w - c;
+    };
+    // The pixel centers an end at coordinate v may snap to: both sides of a boundary it lies on.
+    auto centers = [](double v) {
+        const double k = std::round(v);
+        if (std::abs(v - k) <= 1e-7) return std::vector<double>{k - 0.5, k + 0.5};
+        return std::vector<double>{std::floor(v) + 0.5};
+    };
+    for (std::size_t p = 0; p < s.panels.size(); ++p) {
+        const Panel& panel = s.panels[p];
+        const std::string key = "panel" + std::to_string(p);
+        const Matrix vp = mul(mat(ref, key + ".proj"), mat(ref, key + ".view"));
+        for (std::size_t i = 0; i < panel.items.size(); ++i) {
+            const Matrix mvp = mul(vp, mat(ref, key + ".model" + std::to_string(i)));
+            const Mesh& mesh = panel.items[i].mesh;
+            const int n = int(mesh.positions.size());
+            for (const auto& e : mesh.edges) {
+                if (e[0] < 0 || e[0] >= n || e[1] < 0 || e[1] >= n) continue;
+                const Vec4 a = apply(mvp, mesh.positions[std::size_t(e[0])]);
+                const Vec4 b = apply(mvp, mesh.positions[std::size_t(e[1])]);
+                double t0 = 0, t1 = 1;
+                bool empty = false;
+                for (int plane = 0; plane < 6 && s.clip; ++plane) {
+                    const double da = dist(a, plane), db = dist(b, plane);
+                    if (da < 0 && db < 0) empty = true;
+                    else if (da < 0) t0 = std::max(t0, da / (da - db));
+                    else if (db < 0) t1 = std::min(t1, da / (da - db));
+                }
+                if (empty || !(t0 <= t1)) continue;
+                std::vector<double> ends[2][2];  // [end][x or y]: the centers it may snap to
+                bool ambiguous = false;
+                for (int k = 0; k < 2; ++k) {
+                    const Vec4 q = a + (b - a) * (k == 0 ? t0 : t1);
+                    const double x = (q.x / q.w + 1) / 2 * panel.w, y = (1 - q.y / q.w) / 2 * panel.h;
+                    if (!std::isfinite(x) || !std::isfinite(y) || std::abs(x) > 1e5 || std::abs(y) > 1e5) {
+                        ambiguous = false;
+                        break;
+                    }
+                    ends[k][0] = centers(x);
+                    ends[k][1] = centers(y);
+                    ambiguous |= ends[k][0].size() > 1 || ends[k][1].size() > 1;
+                }
+                if (!ambiguous) continue;
+                for (double ax : ends[0][0]) for (double ay : ends[0][1]) for (double bx : ends[1][0]) for (double by : ends[1][1]) {
+                    const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+                    const int x_lo = std::max(0, int(std::floor(std::min(ax, bx))) - 1);
+                    const int x_hi = std::min(panel.w - 1, int(std::floor(std::max(ax, bx))) + 1);
+                    const int y_lo = std::max(0, int(std::floor(std::min(ay, by))) - 1);
+                    const int y_hi = std::min(panel.h - 1, int(std::floor(std::max(ay, by))) + 1);
+                    for (int y = y_lo; y <= y_hi; ++y) {
+                        for (int x = x_lo; x <= x_hi; ++x) {
+                            const double px = x + 0.5 - ax, py = y + 0.5 - ay;
+                            const double t = len2 > 0 ? std::clamp((px * dx + py * dy) / len2, 0.0, 1.0) : 0.0;
+                            const double ex = px - t * dx, ey = py - t * dy;
+                            if (ex * ex + ey * ey <= 1.0) lenient.set(panel.x0 + x, panel.y0 + y);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
 // Pixels next to a color change in the expected image: a vertex rounding to a neighbouring
-// pixel may move them, so they may differ (up to a fifth of them).
-cp::Tolerance tolerance_for(const raster::Image& expected) {
+// pixel may move them, so they may differ (up to a fifth of them). So may the pixels of a
+// wireframe line whose end lies on a pixel boundary (mark_ambiguous_line_ends).
+cp::Tolerance tolerance_for(const Scene& s, const Values& ref, const raster::Image& expected) {
     cp::Tolerance t;
     t.lenient = raster::Mask(expected.width(), expected.height());
     for (int y = 0; y < expected.height(); ++y) {
@@ -1098,6 +1177,7 @@ cp::Tolerance tolerance_for(const raster::Image& expected) {
             }
         }
     }
+    mark_ambiguous_line_ends(s, ref, t.lenient);
     t.max_lenient_diffs = t.lenient.count() / 5;
     t.why = "pixels next to an edge depend on how a vertex near a pixel boundary rounds";
     return t;
@@ -1258,7 +1338,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
     const bool differs = [&] {
         const auto it = art.images.find("main");
         return camera_ok && clipper_ok && !c.expected.empty() && it != art.images.end() &&
-               strict_diffs(it->second, c.expected, tolerance_for(c.expected)) > 0;
+               strict_diffs(it->second, c.expected, c.j.tolerance) > 0;
     }();
     bool culled_ok = true;
     for (const cp::Finding& f : c.j.findings) culled_ok &= f.topic != "culling";
@@ -1282,9 +1362,10 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
         const raster::Image& expected = c.expected;
         const auto it = art.images.find("main");
         if (!expected.empty() && it != art.images.end() &&
-            strict_diffs(it->second, expected, tolerance_for(expected)) > 0) {
+            strict_diffs(it->second, expected, c.j.tolerance) > 0) {
             c.add("clip space", "TODO 11: every function draw_model calls passes its own checks here (matrices, "
                                 "look_at, projection, to_screen, clip_polygon" +
+                                    std::string(c.s.wireframe ? ", clip_line" : "") +
                                     std::string(c.s.cull ? ", is_back_facing" : "") + (c.s.painter ? ", painter_order" : "") +
                                     ")"
                                     ", yet the picture differs where no edge is near, so "
@@ -1348,7 +1429,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& artifacts, const
                     const raster::Image& expected) {
     const Scene& s = scene(id);
     cp::Judgement j;
-    if (!expected.empty()) j.tolerance = tolerance_for(expected);  // (a missing one: the harness says so)
+    if (!expected.empty()) j.tolerance = tolerance_for(s, reference.values, expected);  // (a missing one: the harness says so)
     Ctx c{s, artifacts.values, reference.values, j, expected};
     if (artifacts.stray_writes > 0) {
         c.add("pipeline", std::to_string(artifacts.stray_writes) + " write(s) outside the image: milestones 1 and 2 "

