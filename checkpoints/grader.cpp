@@ -515,7 +515,8 @@ int cmd_report(const std::vector<std::string>& args) {
                 per_milestone[m].second += max;
             }
             std::string output = checkpoint_output(v, why);
-            if (!compiled) output = not_built + ": the reason is in the test \"" + m + " compiles\"\n" + output;
+            // The same name as the test that holds the reason, and as its section in report.html.
+            if (!compiled) output = not_built + ": the reason is in \"" + m + " compiles\"\n" + output;
             const bool hidden = is_hidden;
             tests.push_back({{"name", m + " " + cname},
                              {"score", got},
@@ -600,7 +601,7 @@ int cmd_report(const std::vector<std::string>& args) {
                          {"visibility", "visible"}});
         if (!compiled) {
             sections << "<section id=\"" << m << "-compile\"><h3>" << m
-                     << ": " << not_built << "</h3><pre>" << html_escape(compile_log) << "</pre></section>\n";
+                     << " compiles: " << not_built << "</h3><pre>" << html_escape(compile_log) << "</pre></section>\n";
         }
     }
     std::ostringstream summary;

@@ -154,7 +154,11 @@ m1, m3 = tests["m1 compiles"], tests["m3 compiles"]
 assert m1.startswith("missing file:") and "other/lines.cpp" in m1 and "copy/lines.cpp" in m1, m1
 assert m3.startswith("missing file:") and "milestone3_transforms/Transforms.cpp" in m3, m3
 assert tests["m1 m1.octant_1"].startswith("missing file:") and "render time" not in tests["m1 m1.octant_1"]
+# A checkpoint of a milestone not built names the test with the reason as report.html titles it.
+assert 'the reason is in "m1 compiles"' in tests["m1 m1.octant_1"], tests["m1 m1.octant_1"]
 PY
+    grep -q '<h3>m1 compiles: missing file</h3>' "$work/out/report.html" ||
+      fail "report.html does not title m1's reason as the test \"m1 compiles\" that the checkpoints name"
     ;;
   bugs-m*)
     # A deliberate bug loses the points of every checkpoint it names (and is graded on them),
@@ -235,6 +239,8 @@ PY
       python3 -c "import json; json.load(open('$r'))" || fail "results.json is not JSON"
       # Nothing read at compile time from outside the course's headers reaches the student.
       if grep -rq "root:x:0:0" "$work/out-$check"; then fail "the results quote /etc/passwd ($check the code check)"; fi
+      # A refusal says in place what is refused: students have no grading notes to look up.
+      if grep -rq "grading notes" "$work/out-$check"; then fail "the results send students to notes they do not have"; fi
       # Output that cannot be read is one finding, its reason, not also "no main image".
       if [ "$attack" = png_bomb ] && [ "$check" = without ]; then
         grep -q "could not be used" "$r" || fail "the unreadable PNG was not named: $(cat "$r")"
