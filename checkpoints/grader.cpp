@@ -632,6 +632,12 @@ int cmd_report(const std::vector<std::string>& args) {
          << passing.str() << cp::kPictureLoadMarker << "</body></html>\n";
     write_file_checked(out / "report.html", html.str());
     std::cout << summary.str() << "\n";
+    // For the instructor's console only (results.json's output is the students'): the grade.
+    if (hidden_count > 0) {
+        std::cout << "Score " << fmt_points(score) << " / " << fmt_points(total) << " with the " << hidden_count
+                  << " hidden checkpoint" << (hidden_count == 1 ? "" : "s")
+                  << ": the grade, which students see when the grades are published.\n";
+    }
     return 0;
 }
 
@@ -817,27 +823,89 @@ int cmd_plan(const std::vector<std::string>& args) {
     }
     if (args.size() >= 4 && !args[3].empty()) try {
         const json h = json::parse(read_text(args[3]));
-        std::set<std::string> names;
+        if (!h.is_object() || !h.contains("checkpoints") || !h.at("checkpoints").is_array()) {
+            throw std::invalid_argument("the file must be {\"checkpoints\": [ ... ]}, a list of entries");
+        }
+        // Every entry is checked on every call, whichever milestone it belongs to, so that the
+        // first plan the grader makes refuses a wrong entry before anything is graded. Names are
+        // unique among all checkpoints: the public ones of every milestone and the hidden ones.
+        std::map<std::string, std::string> milestone_of;  // public checkpoint (= scene) -> milestone
+        for (const auto& [rm, rr] : rubric) {
+            for (const std::string& id : suite(rm).ids) milestone_of[id] = rm;
+        }
+        std::map<std::string, int> hidden_names;  // name -> entry
         int entry = 0;
         for (const json& c : h.at("checkpoints")) {
             ++entry;
-            if (!c.contains("name") || !c.contains("milestone") || !c.contains("scene") || !c.contains("seed")) {
-                throw std::invalid_argument("checkpoint " + std::to_string(entry) +
-                                            " needs name, milestone, scene and seed (points and title are optional)");
+            std::string label = "entry " + std::to_string(entry);
+            if (!c.is_object() || !c.contains("name") || !c.contains("milestone") || !c.contains("scene") ||
+                !c.contains("seed")) {
+                throw std::invalid_argument(label + " needs name, milestone, scene and seed (points and title are optional)");
             }
-            if (c.at("milestone").get<std::string>() != m) continue;
-            const std::string name = c.at("name").get<std::string>(), scene = c.at("scene").get<std::string>();
+            // A field's value as it is written, to quote in a message.
+            auto written = [](const json& f) {
+                std::string d = f.dump();
+                return d.size() > 40 ? d.substr(0, 40) + "..." : d;
+            };
+            auto text = [&](const char* field) {
+                const json& f = c.at(field);
+                if (!f.is_string()) {
+                    throw std::invalid_argument(label + ": \"" + field + "\" must be a string (in quotes), not " +
+                                                written(f) + " (a " + f.type_name() + ")");
+                }
+                return f.get<std::string>();
+            };
+            const std::string name = text("name");
+            label += " (" + name + ")";
             const bool plain = !name.empty() && std::all_of(name.begin(), name.end(), [](char ch) {
                 return std::isalnum(static_cast<unsigned char>(ch)) || ch == '.' || ch == '_' || ch == '-';
             });
-            if (!plain || !names.insert(name).second) throw std::invalid_argument("hidden checkpoint name '" + name + "' is not a unique plain name");
-            if (std::find(s.ids.begin(), s.ids.end(), scene) == s.ids.end()) {
-                throw std::invalid_argument("hidden checkpoint " + name + ": no scene " + scene);
+            if (!plain) throw std::invalid_argument(label + ": a name is letters, digits, '.', '_' and '-' only");
+            if (milestone_of.count(name)) {
+                throw std::invalid_argument(label + ": " + name + " is the name of a public checkpoint of " +
+                                            milestone_of.at(name) +
+                                            "; a hidden checkpoint needs a name of its own (such as hidden." +
+                                            name.substr(name.find('.') + 1) + ")");
             }
-            const std::uint64_t hseed = c.at("seed").get<std::uint64_t>();
+            if (!hidden_names.emplace(name, entry).second) {
+                throw std::invalid_argument(label + ": entry " + std::to_string(hidden_names.at(name)) +
+                                            " has the same name; each hidden checkpoint needs a name of its own");
+            }
+            const std::string hm = text("milestone"), scene = text("scene");
+            if (!rubric.count(hm)) {
+                std::string known;
+                for (const auto& [rm, rr] : rubric) known += (known.empty() ? "" : ", ") + rm;
+                throw std::invalid_argument(label + ": milestone " + hm + " is not in the rubric (" + known + ")");
+            }
+            if (!milestone_of.count(scene) || milestone_of.at(scene) != hm) {
+                throw std::invalid_argument(
+                    label + ": " +
+                    (milestone_of.count(scene)
+                         ? "scene " + scene + " belongs to milestone " + milestone_of.at(scene) + ", not " + hm +
+                               ": give \"milestone\": \"" + milestone_of.at(scene) + "\", or a scene of " + hm
+                         : "no scene " + scene + " in milestone " + hm + " (`raster_grade ids " + hm + "` lists them)"));
+            }
+            const json& js = c.at("seed");
+            if (!js.is_number_unsigned()) {
+                throw std::invalid_argument(label + ": \"seed\" must be a whole number of 0 or more (such as 9127, no quotes), not " +
+                                            written(js) + " (a " + js.type_name() + ")");
+            }
+            double points = r.default_points;
+            if (c.contains("points")) {
+                const json& jp = c.at("points");
+                if (!jp.is_number() || !(jp.get<double>() > 0) || jp.get<double>() != std::floor(jp.get<double>()) ||
+                    jp.get<double>() > 1000) {
+                    throw std::invalid_argument(label + ": \"points\" must be a whole number of 1 or more (such as 3, no quotes), not " +
+                                                written(jp));
+                }
+                points = jp.get<double>();
+            }
+            std::string title;
+            if (c.contains("title")) title = text("title");
+            if (hm != m) continue;
+            const std::uint64_t hseed = js.get<std::uint64_t>();
             std::cout << name << " " << scene << " " << (seed == 0 ? hseed : mix(seed, hseed)) << " after_published "
-                      << fmt_points(c.value("points", r.default_points)) << " "
-                      << clean(c.value("title", s.title(scene))) << "\n";
+                      << fmt_points(points) << " " << clean(title.empty() ? s.title(scene) : title) << "\n";
         }
     } catch (const std::exception& e) {
         throw std::invalid_argument(args[3] + ": " + e.what());

@@ -691,6 +691,61 @@ CPP
     [ "$(score "$work/seed/results.json")" = 0 ] || fail "the memorizing translate() scored on a variant"
     grep -q "inputs drawn for this grading" "$work/seed/results.json" || fail "the finding does not say why"
     ;;
+  hidden)
+    # hidden.json is checked before anything is graded, and a wrong entry is refused by its
+    # number and name, with what is wrong: a scene of another milestone, points that are not a
+    # whole number above 0, a public checkpoint's name, a seed in quotes.
+    make_submission "$work/sub"
+    bad() {  # bad <entry-json> <text the refusal must hold>...
+      local entry=$1; shift
+      mkdir -p "$work/bad"
+      printf '{"checkpoints": [\n {"name": "hidden.ok", "milestone": "m1", "scene": "m1.octant_1", "seed": 1},\n %s\n]}\n' \
+        "$entry" >"$work/bad/hidden.json"
+      local rc=0
+      bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out-bad" --hidden "$work/bad" "$work/sub" \
+        >"$work/bad.log" 2>&1 || rc=$?
+      [ "$rc" = 2 ] || { cat "$work/bad.log"; fail "a hidden.json with $entry: exit status $rc, not 2"; }
+      [ ! -e "$work/out-bad" ] || fail "a hidden.json with $entry: something was graded"
+      for want in "entry 2" "$@"; do
+        grep -qF -- "$want" "$work/bad.log" || { cat "$work/bad.log"; fail "the refusal of $entry does not say '$want'"; }
+      done
+      if grep -q "json.exception" "$work/bad.log"; then cat "$work/bad.log"; fail "the refusal of $entry is the JSON library's"; fi
+    }
+    bad '{"name": "hidden.oops", "milestone": "m2", "scene": "m1.octant_2", "seed": 5}' \
+      "hidden.oops" "belongs to milestone m1, not m2"
+    bad '{"name": "hidden.neg", "milestone": "m1", "scene": "m1.octant_2", "seed": 5, "points": -2}' \
+      "hidden.neg" '"points" must be a whole number'
+    bad '{"name": "hidden.half", "milestone": "m1", "scene": "m1.octant_2", "seed": 5, "points": 1.5}' \
+      "hidden.half" '"points" must be a whole number'
+    bad '{"name": "m1.octant_2", "milestone": "m1", "scene": "m1.octant_2", "seed": 5}' \
+      "m1.octant_2 is the name of a public checkpoint"
+    bad '{"name": "hidden.ok", "milestone": "m1", "scene": "m1.octant_2", "seed": 5}' "entry 1 has the same name"
+    bad '{"name": "hidden.text", "milestone": "m1", "scene": "m1.octant_2", "seed": "5"}' \
+      "hidden.text" '"seed" must be a whole number' "a string"
+    # A good one is graded, and the console shows the instructor the grade with the hidden points
+    # besides the students' visible summary.
+    mkdir -p "$work/good"
+    printf '{"checkpoints": [{"name": "hidden.steep", "milestone": "m1", "scene": "m1.octant_2", "seed": 9127, "points": 3}]}\n' \
+      >"$work/good/hidden.json"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
+      --only m1.octant_1,hidden.steep --hidden "$work/good" "$work/sub" >"$work/log" 2>&1 ||
+      { cat "$work/log"; fail "grading with a good hidden.json failed"; }
+    grep -q '^Visible checkpoints: m1: 2/2\.' "$work/log" || { cat "$work/log"; fail "no visible summary"; }
+    grep -q '^Score 5 / 5 with the 1 hidden checkpoint' "$work/log" || { cat "$work/log"; fail "the console does not show the grade"; }
+    if grep -q 'Score 5' "$work/out/results.json"; then fail "results.json's visible output gives the total away"; fi
+    # README's example grade has the rubric's maxima.
+    totals=$(for m in m1 m2 m3 m4 m5; do
+               "$build/checkpoints/raster_grade" plan "$root/checkpoints/rubric.json" "$m" 0 | awk -v m="$m" '{ s += $5 } END { print m, s }'
+             done)
+    python3 - "$root/README.md" "$totals" <<'PY' || fail "README.md's example grade does not have checkpoints/rubric.json's maxima (above)"
+import re, sys
+line = next(l for l in open(sys.argv[1]) if l.startswith("Score ") and "Scene seed" in l)
+maxima = dict(l.split() for l in sys.argv[2].splitlines())
+assert int(re.search(r" / (\d+)\.", line).group(1)) == sum(int(v) for v in maxima.values()), line
+for m, got in re.findall(r"(m\d): \d+/(\d+)\.", line):
+    assert got == maxima[m], f"{m}: {got} in README.md, {maxima[m]} in the rubric"
+PY
+    ;;
   *) fail "unknown case" ;;
 esac
 check_clean
