@@ -463,7 +463,7 @@ int cmd_report(const std::vector<std::string>& args) {
     fs::create_directories(out);
     json tests = json::array();
     double score = 0, total = 0;
-    std::ostringstream html, rows, sections, passing;
+    std::ostringstream html, rows, sections, passing, notes;
     std::map<std::string, std::pair<double, double>> per_milestone;  // earned, max (visible only)
     int hidden_count = 0;
     for (const auto& [m, r] : rubric) {
@@ -477,6 +477,10 @@ int cmd_report(const std::vector<std::string>& args) {
                                       : compile_log.rfind("Refused before linking", 0) == 0 ? "code refused"
                                                                                             : "compile error";
         if (compile_log.size() > 20000) compile_log = compile_log.substr(0, 20000) + "\n[... cut]";
+        // Which file was graded where the submission has several of its name (the grader's own
+        // words, from its private folder).
+        std::string layout = read_text(mdir / "layout.txt");
+        if (layout.size() > 4000) layout = layout.substr(0, 4000) + "\n[... cut]\n";
         // The trusted list of checkpoints this milestone was graded on (written by the grader
         // from `raster_grade ids` and the hidden ones): a missing verdict scores 0.
         std::istringstream list(read_text(mdir / "checkpoints.txt"));
@@ -597,8 +601,13 @@ int cmd_report(const std::vector<std::string>& args) {
                          {"score", 0},
                          {"max_score", 0},
                          {"status", compiled ? "passed" : "failed"},
-                         {"output", compiled ? std::string("compiled") : not_built + ":\n" + compile_log},
+                         {"output", (compiled ? std::string("compiled") : not_built + ":\n" + compile_log) +
+                                        (layout.empty() ? "" : "\n" + layout)},
                          {"visibility", "visible"}});
+        if (!layout.empty()) {
+            notes << "<section id=\"" << m << "-files\"><h3>" << m << " compiles: which file was graded</h3><pre>"
+                  << html_escape(layout) << "</pre></section>\n";
+        }
         if (!compiled) {
             sections << "<section id=\"" << m << "-compile\"><h3>" << m
                      << " compiles: " << not_built << "</h3><pre>" << html_escape(compile_log) << "</pre></section>\n";
@@ -625,7 +634,7 @@ int cmd_report(const std::vector<std::string>& args) {
          << "</title>" << kStyle << "</head><body><h1>Grade: " << html_escape(name) << "</h1><p>"
          << html_escape(summary.str()) << "</p><table><tr><th>checkpoint</th><th>status</th><th>points</th>"
          << "<th>concepts</th><th>your ms</th><th>reference ms</th><th>pixels differ</th></tr>\n"
-         << rows.str() << "</table>\n" << sections.str()
+         << rows.str() << "</table>\n" << notes.str() << sections.str()
          << (!sections.str().empty() && !passing.str().empty()
                  ? "<p id=\"full-marks\"><b>Checkpoints with full marks</b> (those that lost points are above)</p>\n"
                  : "")

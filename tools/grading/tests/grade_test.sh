@@ -143,6 +143,10 @@ case "$case_name" in
     mkdir -p "$work/sub/other" && mv "$work/sub/milestone1_lines/lines.cpp" "$work/sub/other/lines.cpp"
     mv "$work/sub/copy/milestone1_lines/lines.cpp" "$work/sub/copy/lines.cpp"
     mv "$work/sub/milestone3_transforms/transforms.cpp" "$work/sub/milestone3_transforms/Transforms.cpp"
+    # Two triangles.cpp as near the top: the one in milestone2_triangles/ is graded, and the
+    # student is told which one was not. Milestone 5's file only in a zip inside the submission.
+    mkdir -p "$work/sub/old" && cp "$root/milestone2_triangles/triangles.cpp" "$work/sub/old/triangles.cpp"
+    (cd "$work/sub" && zip -qm inner.zip milestone5_textures_shadows/textures_shadows.cpp)
     bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 \
       --only m1.octant_1,m2.top_left,m3.matrix_ops "$work/sub"
     r=$work/out/results.json
@@ -150,6 +154,9 @@ case "$case_name" in
     python3 - "$r" <<'PY' || fail "the missing files are not told as such (results.json above)"
 import json, sys
 tests = {t["name"]: t["output"] for t in json.load(open(sys.argv[1]))["tests"]}
+m2, m5 = tests["m2 compiles"], tests["m5 compiles"]
+assert m2.startswith("compiled") and "graded: milestone2_triangles/triangles.cpp" in m2 and "old/triangles.cpp" in m2, m2
+assert m5.startswith("missing file:") and "inner.zip" in m5 and "not opened" in m5, m5
 m1, m3 = tests["m1 compiles"], tests["m3 compiles"]
 assert m1.startswith("missing file:") and "other/lines.cpp" in m1 and "copy/lines.cpp" in m1, m1
 assert m3.startswith("missing file:") and "milestone3_transforms/Transforms.cpp" in m3, m3
@@ -159,6 +166,7 @@ assert 'the reason is in "m1 compiles"' in tests["m1 m1.octant_1"], tests["m1 m1
 PY
     grep -q '<h3>m1 compiles: missing file</h3>' "$work/out/report.html" ||
       fail "report.html does not title m1's reason as the test \"m1 compiles\" that the checkpoints name"
+    grep -q 'm2 compiles: which file was graded' "$work/out/report.html" || fail "report.html does not say which triangles.cpp was graded"
     ;;
   bugs-m*)
     # A deliberate bug loses the points of every checkpoint it names (and is graded on them),
