@@ -23,8 +23,9 @@
 //       format) and <out-dir>/report.html (self-contained: pictures inline).
 //   raster_grade class <out-dir> <results.json>...
 //       The class view of many gradings: <out-dir>/class.csv (points per milestone and per
-//       checkpoint, a row per submission) and <out-dir>/class.html (which checkpoints the
-//       class fails most, with the concept named).
+//       checkpoint: a row "(maximum)", then a row per submission) and <out-dir>/class.html
+//       (which checkpoints the class fails most, with the concept named; unbuilt milestones
+//       left out).
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -696,7 +697,7 @@ int cmd_class(const std::vector<std::string>& args) {
     std::vector<Row> rows;
     std::vector<std::string> columns;  // checkpoint names, in first-seen order
     std::map<std::string, double> max_of;
-    std::map<std::string, int> fails;
+    std::map<std::string, int> fails, graded;  // checkpoint -> submissions that failed it, that built its milestone
     std::map<std::string, std::map<std::string, int>> concepts_of;  // checkpoint -> concept -> count
     for (std::size_t i = 1; i < args.size(); ++i) {
         const fs::path p = args[i];
@@ -710,18 +711,28 @@ int cmd_class(const std::vector<std::string>& args) {
             continue;
         }
         row.score = j.value("score", 0.0);
+        // The milestones not built (compile error, missing file, code refused): their checkpoints'
+        // failures say nothing about the checkpoints, so they are left out of the list of the
+        // checkpoints the class fails (the "not built" column shows them).
+        std::set<std::string> unbuilt;
         for (const json& t : j.value("tests", json::array())) {
             const std::string name = t.value("name", std::string());
             if (name.size() > 9 && name.ends_with(" compiles") && t.value("status", std::string()) == "failed") {
                 const std::string output = t.value("output", std::string());
+                unbuilt.insert(name.substr(0, name.find(' ')));
                 row.unbuilt += (row.unbuilt.empty() ? "" : ", ") + name.substr(0, name.find(' ')) + ": " +
                                output.substr(0, std::min(output.find(':'), output.find('\n')));
             }
+        }
+        for (const json& t : j.value("tests", json::array())) {
+            const std::string name = t.value("name", std::string());
             if (t.value("max_score", 0.0) <= 0) continue;
             if (!max_of.count(name)) columns.push_back(name);
             max_of[name] = t.value("max_score", 0.0);
             row.points[name] = t.value("score", 0.0);
             row.milestone[name.substr(0, name.find(' '))] += t.value("score", 0.0);
+            if (unbuilt.count(name.substr(0, name.find(' ')))) continue;
+            ++graded[name];
             if (t.value("score", 0.0) < t.value("max_score", 0.0)) {
                 ++fails[name];
                 const std::string output = t.value("output", std::string());
@@ -729,7 +740,6 @@ int cmd_class(const std::vector<std::string>& args) {
                 const auto at = output.find("\n  [");
                 if (at != std::string::npos) {
                     const auto end = output.find(']', at);
-                    // (an unbuilt milestone's checkpoints too: "[compile]", "[missing file]")
                     concepts_of[name][output.substr(at + 4, end - at - 4)]++;
                 }
             }
@@ -737,11 +747,22 @@ int cmd_class(const std::vector<std::string>& args) {
         rows.push_back(row);
     }
     std::set<std::string> milestones;
-    for (const std::string& c : columns) milestones.insert(c.substr(0, c.find(' ')));
+    std::map<std::string, double> milestone_max;
+    double total_max = 0;
+    for (const std::string& c : columns) {
+        milestones.insert(c.substr(0, c.find(' ')));
+        milestone_max[c.substr(0, c.find(' '))] += max_of[c];
+        total_max += max_of[c];
+    }
+    // The header, then a row "(maximum)" of the points each column can have (so that a
+    // spreadsheet keeps plain column names and can divide by that row), then a row each.
     std::ostringstream csv;
     csv << "submission,score";
     for (const std::string& m : milestones) csv << "," << csv_field(m);
     for (const std::string& c : columns) csv << "," << csv_field(c);
+    csv << "\n(maximum)," << fmt_points(total_max);
+    for (const std::string& m : milestones) csv << "," << fmt_points(milestone_max[m]);
+    for (const std::string& c : columns) csv << "," << fmt_points(max_of[c]);
     csv << "\n";
     for (const Row& r : rows) {
         csv << csv_field(r.who) << "," << fmt_points(r.score);
@@ -754,9 +775,12 @@ int cmd_class(const std::vector<std::string>& args) {
     std::ostringstream html;
     html << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>Class results</title>" << kStyle
          << "</head><body><h1>Class results</h1><p>" << rows.size()
-         << " submission(s): their points first, then the checkpoints the class fails most, with the concept their "
-            "first finding names.</p><h2>Submissions</h2><table><tr><th>submission</th><th>score</th>";
-    for (const std::string& m : milestones) html << "<th>" << html_escape(m) << "</th>";
+         << " submission(s): their points first (a column's maximum in its heading), then the checkpoints the class "
+            "fails most, with the concept their first finding names; a milestone that was not built (compile error, "
+            "missing file, code refused) is left out of that list, as its checkpoints were not tried (the \"not "
+            "built\" column shows it).</p><h2>Submissions</h2><table><tr><th>submission</th><th>score ("
+         << fmt_points(total_max) << ")</th>";
+    for (const std::string& m : milestones) html << "<th>" << html_escape(m) << " (" << fmt_points(milestone_max[m]) << ")</th>";
     html << "<th>not built</th></tr>\n";
     for (const Row& r : rows) {
         html << "<tr><td><a href=\"" << html_escape(relative_link(r.who, "/report.html")) << "\">" << html_escape(r.who) << "</a></td><td>"
@@ -764,14 +788,16 @@ int cmd_class(const std::vector<std::string>& args) {
         for (const std::string& m : milestones) html << "<td>" << fmt_points(r.milestone.count(m) ? r.milestone.at(m) : 0) << "</td>";
         html << "<td>" << html_escape(r.unbuilt) << "</td></tr>\n";
     }
-    html << "</table><h2>Checkpoints</h2><table><tr><th>checkpoint</th><th>failed by</th><th>concepts</th></tr>\n";
+    html << "</table><h2>Checkpoints</h2><table><tr><th>checkpoint</th><th>failed by (of those that built its milestone)</th>"
+            "<th>concepts</th></tr>\n";
     for (const std::string& c : order) {
+        if (graded[c] == 0) continue;  // no submission built its milestone
         std::string concepts;
         std::vector<std::pair<int, std::string>> byc;
         for (const auto& [k, n] : concepts_of[c]) byc.push_back({-n, k});
         std::sort(byc.begin(), byc.end());
         for (const auto& [n, k] : byc) concepts += (concepts.empty() ? "" : ", ") + k + " (" + std::to_string(-n) + ")";
-        html << "<tr><td>" << html_escape(c) << "</td><td>" << fails[c] << " of " << rows.size() << "</td><td>"
+        html << "<tr><td>" << html_escape(c) << "</td><td>" << fails[c] << " of " << graded[c] << "</td><td>"
              << html_escape(concepts) << "</td></tr>\n";
     }
     html << "</table>" << cp::kPictureLoadMarker << "</body></html>\n";

@@ -579,26 +579,37 @@ PY
     grep -q 'octant' <<<"$dom" || fail "the failing checkpoint's findings are not on the page"
     ;;
   batch)
-    # A class of three (the reference as a zip, the skeleton, one bug) graded two at a time:
-    # class.csv has a row each with the right totals, class.html names the most failed concept.
+    # A class of four (the reference as a zip, the skeleton, one bug, a compile error) graded two
+    # at a time: class.csv has a row of maxima and a row each with the right totals, class.html
+    # names the most failed concept, counting only the submissions that built the milestone.
     mkdir "$work/class"
     make_submission "$work/ref"; (cd "$work/ref" && zip -qr "$work/class/alice.zip" .)
     make_submission "$work/class/bob" "$root/milestone1_lines/lines.cpp"
     make_submission "$work/class/carol" "$build/checkpoints/generated/m1/bug_wrong_octants.cpp"
+    printf 'this is not C++\n' >"$work/broken.cpp"
+    make_submission "$work/class/dave" "$work/broken.cpp"
     bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
       --only m1.outcodes,m1.octant_1,m1.octant_3 --batch "$work/class" >"$work/log" 2>&1 ||
       { cat "$work/log"; fail "batch grading failed"; }
-    python3 - "$work/out/class.csv" <<'PY' || { cat "$work/log"; fail "class.csv is wrong"; }
-import csv, sys
+    python3 - "$work/out/class.csv" "$work/out/class.html" <<'PY' || { cat "$work/log"; fail "the class view is wrong"; }
+import csv, re, sys
 rows = {r["submission"]: r for r in csv.DictReader(open(sys.argv[1]))}
-assert set(rows) == {"alice", "bob", "carol"}, rows.keys()
-assert float(rows["alice"]["m1"]) == 5, rows["alice"]
+assert set(rows) == {"(maximum)", "alice", "bob", "carol", "dave"}, rows.keys()
+assert float(rows["(maximum)"]["m1"]) == 5 and float(rows["(maximum)"]["score"]) == 5, rows["(maximum)"]
+assert float(rows["(maximum)"]["m1 m1.outcodes"]) == 1, rows["(maximum)"]
+assert float(rows["dave"]["m1"]) == 0, rows["dave"]
+html = open(sys.argv[2]).read()
+assert "<th>m1 (5)</th>" in html, "no maximum in class.html's milestone heading"
+# dave's milestone was not built: his failures are not the checkpoints' (3 built it).
+assert "[compile]" not in html and "compile (" not in html, "an unbuilt milestone's failures are in the checkpoint list"
+assert re.search(r"<td>m1 m1.octant_1</td><td>\d of 3</td>", html), "m1.octant_1 is not counted of the 3 that built m1"
+assert "m1: compile error" in html, "the not-built column does not show dave's compile error"
 assert float(rows["bob"]["m1"]) == 0, rows["bob"]
 assert 0 < float(rows["carol"]["m1"]) < 5, rows["carol"]
 assert float(rows["carol"]["m1 m1.octant_3"]) == 0, rows["carol"]
 PY
     grep -q 'octant' "$work/out/class.html" || fail "class.html does not name the concept"
-    for who in alice bob carol; do [ -f "$work/out/$who/report.html" ] || fail "no report for $who"; done
+    for who in alice bob carol dave; do [ -f "$work/out/$who/report.html" ] || fail "no report for $who"; done
     ;;
   batch_names)
     # Names a class may hold: one that is a class view's file (class.html), one that two
@@ -607,7 +618,7 @@ PY
     # itself (the taken names with a suffix), class.csv and class.html are the class view's,
     # a name cannot become a formula or a script link, and the zip's file is found.
     mkdir "$work/class"
-    for who in class.html alice '=HYPERLINK("x")' 'javascript:alert(1)'; do
+    for who in class.html '(maximum)' alice '=HYPERLINK("x")' 'javascript:alert(1)'; do
       make_submission "$work/class/$who" "$root/solutions/milestone1_lines/lines.cpp"
     done
     (cd "$work/class/alice" && zip -qr "$work/class/alice.zip" .)
@@ -623,7 +634,7 @@ PY
     python3 - "$work/out/class.csv" "$work/out/class.html" <<'PY' || { cat "$work/log"; fail "the class view is wrong (above)"; }
 import csv, re, sys
 rows = {r["submission"]: r for r in csv.DictReader(open(sys.argv[1]))}
-want = {"class.html (2)", "alice", "alice (2)", "'=HYPERLINK(\"x\")", "javascript:alert(1)", "dave"}
+want = {"(maximum)", "(maximum) (2)", "class.html (2)", "alice", "alice (2)", "'=HYPERLINK(\"x\")", "javascript:alert(1)", "dave"}
 assert set(rows) == want, sorted(rows)
 assert all(float(r["m1"]) == 2 for r in rows.values()), rows
 links = re.findall(r'href="([^"]*)"', open(sys.argv[2]).read())
