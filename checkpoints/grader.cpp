@@ -23,8 +23,9 @@
 //       format) and <out-dir>/report.html (self-contained: pictures inline).
 //   raster_grade class <out-dir> <results.json>...
 //       The class view of many gradings: <out-dir>/class.csv (points per milestone and per
-//       checkpoint, a row per submission) and <out-dir>/class.html (which checkpoints the
-//       class fails most, with the concept named).
+//       checkpoint: a row "(maximum)", then a row per submission) and <out-dir>/class.html
+//       (which checkpoints the class fails most, with the concept named; unbuilt milestones
+//       left out).
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -470,7 +471,7 @@ int cmd_report(const std::vector<std::string>& args) {
     fs::create_directories(out);
     json tests = json::array();
     double score = 0, total = 0;
-    std::ostringstream html, rows, sections, passing;
+    std::ostringstream html, rows, sections, passing, notes;
     std::map<std::string, std::pair<double, double>> per_milestone;  // earned, max (visible only)
     int hidden_count = 0;
     for (const auto& [m, r] : rubric) {
@@ -484,6 +485,10 @@ int cmd_report(const std::vector<std::string>& args) {
                                       : compile_log.rfind("Refused before linking", 0) == 0 ? "code refused"
                                                                                             : "compile error";
         if (compile_log.size() > 20000) compile_log = compile_log.substr(0, 20000) + "\n[... cut]";
+        // Which file was graded where the submission has several of its name (the grader's own
+        // words, from its private folder).
+        std::string layout = read_text(mdir / "layout.txt");
+        if (layout.size() > 4000) layout = layout.substr(0, 4000) + "\n[... cut]\n";
         // The trusted list of checkpoints this milestone was graded on (written by the grader
         // from `raster_grade ids` and the hidden ones): a missing verdict scores 0.
         std::istringstream list(read_text(mdir / "checkpoints.txt"));
@@ -522,7 +527,8 @@ int cmd_report(const std::vector<std::string>& args) {
                 per_milestone[m].second += max;
             }
             std::string output = checkpoint_output(v, why);
-            if (!compiled) output = not_built + ": the reason is in the test \"" + m + " compiles\"\n" + output;
+            // The same name as the test that holds the reason, and as its section in report.html.
+            if (!compiled) output = not_built + ": the reason is in \"" + m + " compiles\"\n" + output;
             const bool hidden = is_hidden;
             tests.push_back({{"name", m + " " + cname},
                              {"score", got},
@@ -609,11 +615,16 @@ int cmd_report(const std::vector<std::string>& args) {
                          {"score", 0},
                          {"max_score", 0},
                          {"status", compiled ? "passed" : "failed"},
-                         {"output", compiled ? std::string("compiled") : not_built + ":\n" + compile_log},
+                         {"output", (compiled ? std::string("compiled") : not_built + ":\n" + compile_log) +
+                                        (layout.empty() ? "" : "\n" + layout)},
                          {"visibility", "visible"}});
+        if (!layout.empty()) {
+            notes << "<section id=\"" << m << "-files\"><h3>" << m << " compiles: which file was graded</h3><pre>"
+                  << html_escape(layout) << "</pre></section>\n";
+        }
         if (!compiled) {
             sections << "<section id=\"" << m << "-compile\"><h3>" << m
-                     << ": " << not_built << "</h3><pre>" << html_escape(compile_log) << "</pre></section>\n";
+                     << " compiles: " << not_built << "</h3><pre>" << html_escape(compile_log) << "</pre></section>\n";
         }
     }
     std::ostringstream summary;
@@ -637,13 +648,19 @@ int cmd_report(const std::vector<std::string>& args) {
          << "</title>" << kStyle << "</head><body><h1>Grade: " << html_escape(name) << "</h1><p>"
          << html_escape(summary.str()) << "</p><table><tr><th>checkpoint</th><th>status</th><th>points</th>"
          << "<th>concepts</th><th>your ms</th><th>reference ms</th><th>pixels differ</th></tr>\n"
-         << rows.str() << "</table>\n" << sections.str()
+         << rows.str() << "</table>\n" << notes.str() << sections.str()
          << (!sections.str().empty() && !passing.str().empty()
                  ? "<p id=\"full-marks\"><b>Checkpoints with full marks</b> (those that lost points are above)</p>\n"
                  : "")
          << passing.str() << cp::kPictureLoadMarker << "</body></html>\n";
     write_file_checked(out / "report.html", html.str());
     std::cout << summary.str() << "\n";
+    // For the instructor's console only (results.json's output is the students'): the grade.
+    if (hidden_count > 0) {
+        std::cout << "Score " << fmt_points(score) << " / " << fmt_points(total) << " with the " << hidden_count
+                  << " hidden checkpoint" << (hidden_count == 1 ? "" : "s")
+                  << ": the grade, which students see when the grades are published.\n";
+    }
     return 0;
 }
 
@@ -693,7 +710,7 @@ int cmd_class(const std::vector<std::string>& args) {
     std::vector<Row> rows;
     std::vector<std::string> columns;  // checkpoint names, in first-seen order
     std::map<std::string, double> max_of;
-    std::map<std::string, int> fails;
+    std::map<std::string, int> fails, graded;  // checkpoint -> submissions that failed it, that built its milestone
     std::map<std::string, std::map<std::string, int>> concepts_of;  // checkpoint -> concept -> count
     for (std::size_t i = 1; i < args.size(); ++i) {
         const fs::path p = args[i];
@@ -707,18 +724,28 @@ int cmd_class(const std::vector<std::string>& args) {
             continue;
         }
         row.score = j.value("score", 0.0);
+        // The milestones not built (compile error, missing file, code refused): their checkpoints'
+        // failures say nothing about the checkpoints, so they are left out of the list of the
+        // checkpoints the class fails (the "not built" column shows them).
+        std::set<std::string> unbuilt;
         for (const json& t : j.value("tests", json::array())) {
             const std::string name = t.value("name", std::string());
             if (name.size() > 9 && name.ends_with(" compiles") && t.value("status", std::string()) == "failed") {
                 const std::string output = t.value("output", std::string());
+                unbuilt.insert(name.substr(0, name.find(' ')));
                 row.unbuilt += (row.unbuilt.empty() ? "" : ", ") + name.substr(0, name.find(' ')) + ": " +
                                output.substr(0, std::min(output.find(':'), output.find('\n')));
             }
+        }
+        for (const json& t : j.value("tests", json::array())) {
+            const std::string name = t.value("name", std::string());
             if (t.value("max_score", 0.0) <= 0) continue;
             if (!max_of.count(name)) columns.push_back(name);
             max_of[name] = t.value("max_score", 0.0);
             row.points[name] = t.value("score", 0.0);
             row.milestone[name.substr(0, name.find(' '))] += t.value("score", 0.0);
+            if (unbuilt.count(name.substr(0, name.find(' ')))) continue;
+            ++graded[name];
             if (t.value("score", 0.0) < t.value("max_score", 0.0)) {
                 ++fails[name];
                 const std::string output = t.value("output", std::string());
@@ -726,7 +753,6 @@ int cmd_class(const std::vector<std::string>& args) {
                 const auto at = output.find("\n  [");
                 if (at != std::string::npos) {
                     const auto end = output.find(']', at);
-                    // (an unbuilt milestone's checkpoints too: "[compile]", "[missing file]")
                     concepts_of[name][output.substr(at + 4, end - at - 4)]++;
                 }
             }
@@ -734,11 +760,22 @@ int cmd_class(const std::vector<std::string>& args) {
         rows.push_back(row);
     }
     std::set<std::string> milestones;
-    for (const std::string& c : columns) milestones.insert(c.substr(0, c.find(' ')));
+    std::map<std::string, double> milestone_max;
+    double total_max = 0;
+    for (const std::string& c : columns) {
+        milestones.insert(c.substr(0, c.find(' ')));
+        milestone_max[c.substr(0, c.find(' '))] += max_of[c];
+        total_max += max_of[c];
+    }
+    // The header, then a row "(maximum)" of the points each column can have (so that a
+    // spreadsheet keeps plain column names and can divide by that row), then a row each.
     std::ostringstream csv;
     csv << "submission,score";
     for (const std::string& m : milestones) csv << "," << csv_field(m);
     for (const std::string& c : columns) csv << "," << csv_field(c);
+    csv << "\n(maximum)," << fmt_points(total_max);
+    for (const std::string& m : milestones) csv << "," << fmt_points(milestone_max[m]);
+    for (const std::string& c : columns) csv << "," << fmt_points(max_of[c]);
     csv << "\n";
     for (const Row& r : rows) {
         csv << csv_field(r.who) << "," << fmt_points(r.score);
@@ -751,9 +788,12 @@ int cmd_class(const std::vector<std::string>& args) {
     std::ostringstream html;
     html << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>Class results</title>" << kStyle
          << "</head><body><h1>Class results</h1><p>" << rows.size()
-         << " submission(s): their points first, then the checkpoints the class fails most, with the concept their "
-            "first finding names.</p><h2>Submissions</h2><table><tr><th>submission</th><th>score</th>";
-    for (const std::string& m : milestones) html << "<th>" << html_escape(m) << "</th>";
+         << " submission(s): their points first (a column's maximum in its heading), then the checkpoints the class "
+            "fails most, with the concept their first finding names; a milestone that was not built (compile error, "
+            "missing file, code refused) is left out of that list, as its checkpoints were not tried (the \"not "
+            "built\" column shows it).</p><h2>Submissions</h2><table><tr><th>submission</th><th>score ("
+         << fmt_points(total_max) << ")</th>";
+    for (const std::string& m : milestones) html << "<th>" << html_escape(m) << " (" << fmt_points(milestone_max[m]) << ")</th>";
     html << "<th>not built</th></tr>\n";
     for (const Row& r : rows) {
         html << "<tr><td><a href=\"" << html_escape(relative_link(r.who, "/report.html")) << "\">" << html_escape(r.who) << "</a></td><td>"
@@ -761,14 +801,16 @@ int cmd_class(const std::vector<std::string>& args) {
         for (const std::string& m : milestones) html << "<td>" << fmt_points(r.milestone.count(m) ? r.milestone.at(m) : 0) << "</td>";
         html << "<td>" << html_escape(r.unbuilt) << "</td></tr>\n";
     }
-    html << "</table><h2>Checkpoints</h2><table><tr><th>checkpoint</th><th>failed by</th><th>concepts</th></tr>\n";
+    html << "</table><h2>Checkpoints</h2><table><tr><th>checkpoint</th><th>failed by (of those that built its milestone)</th>"
+            "<th>concepts</th></tr>\n";
     for (const std::string& c : order) {
+        if (graded[c] == 0) continue;  // no submission built its milestone
         std::string concepts;
         std::vector<std::pair<int, std::string>> byc;
         for (const auto& [k, n] : concepts_of[c]) byc.push_back({-n, k});
         std::sort(byc.begin(), byc.end());
         for (const auto& [n, k] : byc) concepts += (concepts.empty() ? "" : ", ") + k + " (" + std::to_string(-n) + ")";
-        html << "<tr><td>" << html_escape(c) << "</td><td>" << fails[c] << " of " << rows.size() << "</td><td>"
+        html << "<tr><td>" << html_escape(c) << "</td><td>" << fails[c] << " of " << graded[c] << "</td><td>"
              << html_escape(concepts) << "</td></tr>\n";
     }
     html << "</table>" << cp::kPictureLoadMarker << "</body></html>\n";
@@ -829,27 +871,89 @@ int cmd_plan(const std::vector<std::string>& args) {
     }
     if (args.size() >= 4 && !args[3].empty()) try {
         const json h = json::parse(read_text(args[3]));
-        std::set<std::string> names;
+        if (!h.is_object() || !h.contains("checkpoints") || !h.at("checkpoints").is_array()) {
+            throw std::invalid_argument("the file must be {\"checkpoints\": [ ... ]}, a list of entries");
+        }
+        // Every entry is checked on every call, whichever milestone it belongs to, so that the
+        // first plan the grader makes refuses a wrong entry before anything is graded. Names are
+        // unique among all checkpoints: the public ones of every milestone and the hidden ones.
+        std::map<std::string, std::string> milestone_of;  // public checkpoint (= scene) -> milestone
+        for (const auto& [rm, rr] : rubric) {
+            for (const std::string& id : suite(rm).ids) milestone_of[id] = rm;
+        }
+        std::map<std::string, int> hidden_names;  // name -> entry
         int entry = 0;
         for (const json& c : h.at("checkpoints")) {
             ++entry;
-            if (!c.contains("name") || !c.contains("milestone") || !c.contains("scene") || !c.contains("seed")) {
-                throw std::invalid_argument("checkpoint " + std::to_string(entry) +
-                                            " needs name, milestone, scene and seed (points and title are optional)");
+            std::string label = "entry " + std::to_string(entry);
+            if (!c.is_object() || !c.contains("name") || !c.contains("milestone") || !c.contains("scene") ||
+                !c.contains("seed")) {
+                throw std::invalid_argument(label + " needs name, milestone, scene and seed (points and title are optional)");
             }
-            if (c.at("milestone").get<std::string>() != m) continue;
-            const std::string name = c.at("name").get<std::string>(), scene = c.at("scene").get<std::string>();
+            // A field's value as it is written, to quote in a message.
+            auto written = [](const json& f) {
+                std::string d = f.dump();
+                return d.size() > 40 ? d.substr(0, 40) + "..." : d;
+            };
+            auto text = [&](const char* field) {
+                const json& f = c.at(field);
+                if (!f.is_string()) {
+                    throw std::invalid_argument(label + ": \"" + field + "\" must be a string (in quotes), not " +
+                                                written(f) + " (a " + f.type_name() + ")");
+                }
+                return f.get<std::string>();
+            };
+            const std::string name = text("name");
+            label += " (" + name + ")";
             const bool plain = !name.empty() && std::all_of(name.begin(), name.end(), [](char ch) {
                 return std::isalnum(static_cast<unsigned char>(ch)) || ch == '.' || ch == '_' || ch == '-';
             });
-            if (!plain || !names.insert(name).second) throw std::invalid_argument("hidden checkpoint name '" + name + "' is not a unique plain name");
-            if (std::find(s.ids.begin(), s.ids.end(), scene) == s.ids.end()) {
-                throw std::invalid_argument("hidden checkpoint " + name + ": no scene " + scene);
+            if (!plain) throw std::invalid_argument(label + ": a name is letters, digits, '.', '_' and '-' only");
+            if (milestone_of.count(name)) {
+                throw std::invalid_argument(label + ": " + name + " is the name of a public checkpoint of " +
+                                            milestone_of.at(name) +
+                                            "; a hidden checkpoint needs a name of its own (such as hidden." +
+                                            name.substr(name.find('.') + 1) + ")");
             }
-            const std::uint64_t hseed = c.at("seed").get<std::uint64_t>();
+            if (!hidden_names.emplace(name, entry).second) {
+                throw std::invalid_argument(label + ": entry " + std::to_string(hidden_names.at(name)) +
+                                            " has the same name; each hidden checkpoint needs a name of its own");
+            }
+            const std::string hm = text("milestone"), scene = text("scene");
+            if (!rubric.count(hm)) {
+                std::string known;
+                for (const auto& [rm, rr] : rubric) known += (known.empty() ? "" : ", ") + rm;
+                throw std::invalid_argument(label + ": milestone " + hm + " is not in the rubric (" + known + ")");
+            }
+            if (!milestone_of.count(scene) || milestone_of.at(scene) != hm) {
+                throw std::invalid_argument(
+                    label + ": " +
+                    (milestone_of.count(scene)
+                         ? "scene " + scene + " belongs to milestone " + milestone_of.at(scene) + ", not " + hm +
+                               ": give \"milestone\": \"" + milestone_of.at(scene) + "\", or a scene of " + hm
+                         : "no scene " + scene + " in milestone " + hm + " (`raster_grade ids " + hm + "` lists them)"));
+            }
+            const json& js = c.at("seed");
+            if (!js.is_number_unsigned()) {
+                throw std::invalid_argument(label + ": \"seed\" must be a whole number of 0 or more (such as 9127, no quotes), not " +
+                                            written(js) + " (a " + js.type_name() + ")");
+            }
+            double points = r.default_points;
+            if (c.contains("points")) {
+                const json& jp = c.at("points");
+                if (!jp.is_number() || !(jp.get<double>() > 0) || jp.get<double>() != std::floor(jp.get<double>()) ||
+                    jp.get<double>() > 1000) {
+                    throw std::invalid_argument(label + ": \"points\" must be a whole number of 1 or more (such as 3, no quotes), not " +
+                                                written(jp));
+                }
+                points = jp.get<double>();
+            }
+            std::string title;
+            if (c.contains("title")) title = text("title");
+            if (hm != m) continue;
+            const std::uint64_t hseed = js.get<std::uint64_t>();
             std::cout << name << " " << scene << " " << (seed == 0 ? hseed : mix(seed, hseed)) << " after_published "
-                      << fmt_points(c.value("points", r.default_points)) << " "
-                      << clean(c.value("title", s.title(scene))) << "\n";
+                      << fmt_points(points) << " " << clean(title.empty() ? s.title(scene) : title) << "\n";
         }
     } catch (const std::exception& e) {
         throw std::invalid_argument(args[3] + ": " + e.what());

@@ -143,6 +143,10 @@ case "$case_name" in
     mkdir -p "$work/sub/other" && mv "$work/sub/milestone1_lines/lines.cpp" "$work/sub/other/lines.cpp"
     mv "$work/sub/copy/milestone1_lines/lines.cpp" "$work/sub/copy/lines.cpp"
     mv "$work/sub/milestone3_transforms/transforms.cpp" "$work/sub/milestone3_transforms/Transforms.cpp"
+    # Two triangles.cpp as near the top: the one in milestone2_triangles/ is graded, and the
+    # student is told which one was not. Milestone 5's file only in a zip inside the submission.
+    mkdir -p "$work/sub/old" && cp "$root/milestone2_triangles/triangles.cpp" "$work/sub/old/triangles.cpp"
+    (cd "$work/sub" && zip -qm inner.zip milestone5_textures_shadows/textures_shadows.cpp)
     bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 \
       --only m1.octant_1,m2.top_left,m3.matrix_ops "$work/sub"
     r=$work/out/results.json
@@ -150,11 +154,19 @@ case "$case_name" in
     python3 - "$r" <<'PY' || fail "the missing files are not told as such (results.json above)"
 import json, sys
 tests = {t["name"]: t["output"] for t in json.load(open(sys.argv[1]))["tests"]}
+m2, m5 = tests["m2 compiles"], tests["m5 compiles"]
+assert m2.startswith("compiled") and "graded: milestone2_triangles/triangles.cpp" in m2 and "old/triangles.cpp" in m2, m2
+assert m5.startswith("missing file:") and "inner.zip" in m5 and "not opened" in m5, m5
 m1, m3 = tests["m1 compiles"], tests["m3 compiles"]
 assert m1.startswith("missing file:") and "other/lines.cpp" in m1 and "copy/lines.cpp" in m1, m1
 assert m3.startswith("missing file:") and "milestone3_transforms/Transforms.cpp" in m3, m3
 assert tests["m1 m1.octant_1"].startswith("missing file:") and "render time" not in tests["m1 m1.octant_1"]
+# A checkpoint of a milestone not built names the test with the reason as report.html titles it.
+assert 'the reason is in "m1 compiles"' in tests["m1 m1.octant_1"], tests["m1 m1.octant_1"]
 PY
+    grep -q '<h3>m1 compiles: missing file</h3>' "$work/out/report.html" ||
+      fail "report.html does not title m1's reason as the test \"m1 compiles\" that the checkpoints name"
+    grep -q 'm2 compiles: which file was graded' "$work/out/report.html" || fail "report.html does not say which triangles.cpp was graded"
     ;;
   bugs-m*)
     # A deliberate bug loses the points of every checkpoint it names (and is graded on them),
@@ -235,6 +247,8 @@ PY
       python3 -c "import json; json.load(open('$r'))" || fail "results.json is not JSON"
       # Nothing read at compile time from outside the course's headers reaches the student.
       if grep -rq "root:x:0:0" "$work/out-$check"; then fail "the results quote /etc/passwd ($check the code check)"; fi
+      # A refusal says in place what is refused: students have no grading notes to look up.
+      if grep -rq "grading notes" "$work/out-$check"; then fail "the results send students to notes they do not have"; fi
       # Output that cannot be read is one finding, its reason, not also "no main image".
       if [ "$attack" = png_bomb ] && [ "$check" = without ]; then
         grep -q "could not be used" "$r" || fail "the unreadable PNG was not named: $(cat "$r")"
@@ -579,26 +593,37 @@ PY
     grep -q 'octant' <<<"$dom" || fail "the failing checkpoint's findings are not on the page"
     ;;
   batch)
-    # A class of three (the reference as a zip, the skeleton, one bug) graded two at a time:
-    # class.csv has a row each with the right totals, class.html names the most failed concept.
+    # A class of four (the reference as a zip, the skeleton, one bug, a compile error) graded two
+    # at a time: class.csv has a row of maxima and a row each with the right totals, class.html
+    # names the most failed concept, counting only the submissions that built the milestone.
     mkdir "$work/class"
     make_submission "$work/ref"; (cd "$work/ref" && zip -qr "$work/class/alice.zip" .)
     make_submission "$work/class/bob" "$root/milestone1_lines/lines.cpp"
     make_submission "$work/class/carol" "$build/checkpoints/generated/m1/bug_wrong_octants.cpp"
+    printf 'this is not C++\n' >"$work/broken.cpp"
+    make_submission "$work/class/dave" "$work/broken.cpp"
     bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
       --only m1.outcodes,m1.octant_1,m1.octant_3 --batch "$work/class" >"$work/log" 2>&1 ||
       { cat "$work/log"; fail "batch grading failed"; }
-    python3 - "$work/out/class.csv" <<'PY' || { cat "$work/log"; fail "class.csv is wrong"; }
-import csv, sys
+    python3 - "$work/out/class.csv" "$work/out/class.html" <<'PY' || { cat "$work/log"; fail "the class view is wrong"; }
+import csv, re, sys
 rows = {r["submission"]: r for r in csv.DictReader(open(sys.argv[1]))}
-assert set(rows) == {"alice", "bob", "carol"}, rows.keys()
-assert float(rows["alice"]["m1"]) == 5, rows["alice"]
+assert set(rows) == {"(maximum)", "alice", "bob", "carol", "dave"}, rows.keys()
+assert float(rows["(maximum)"]["m1"]) == 5 and float(rows["(maximum)"]["score"]) == 5, rows["(maximum)"]
+assert float(rows["(maximum)"]["m1 m1.outcodes"]) == 1, rows["(maximum)"]
+assert float(rows["dave"]["m1"]) == 0, rows["dave"]
+html = open(sys.argv[2]).read()
+assert "<th>m1 (5)</th>" in html, "no maximum in class.html's milestone heading"
+# dave's milestone was not built: his failures are not the checkpoints' (3 built it).
+assert "[compile]" not in html and "compile (" not in html, "an unbuilt milestone's failures are in the checkpoint list"
+assert re.search(r"<td>m1 m1.octant_1</td><td>\d of 3</td>", html), "m1.octant_1 is not counted of the 3 that built m1"
+assert "m1: compile error" in html, "the not-built column does not show dave's compile error"
 assert float(rows["bob"]["m1"]) == 0, rows["bob"]
 assert 0 < float(rows["carol"]["m1"]) < 5, rows["carol"]
 assert float(rows["carol"]["m1 m1.octant_3"]) == 0, rows["carol"]
 PY
     grep -q 'octant' "$work/out/class.html" || fail "class.html does not name the concept"
-    for who in alice bob carol; do [ -f "$work/out/$who/report.html" ] || fail "no report for $who"; done
+    for who in alice bob carol dave; do [ -f "$work/out/$who/report.html" ] || fail "no report for $who"; done
     ;;
   batch_names)
     # Names a class may hold: one that is a class view's file (class.html), one that two
@@ -607,7 +632,7 @@ PY
     # itself (the taken names with a suffix), class.csv and class.html are the class view's,
     # a name cannot become a formula or a script link, and the zip's file is found.
     mkdir "$work/class"
-    for who in class.html alice '=HYPERLINK("x")' 'javascript:alert(1)'; do
+    for who in class.html '(maximum)' alice '=HYPERLINK("x")' 'javascript:alert(1)'; do
       make_submission "$work/class/$who" "$root/solutions/milestone1_lines/lines.cpp"
     done
     (cd "$work/class/alice" && zip -qr "$work/class/alice.zip" .)
@@ -623,7 +648,7 @@ PY
     python3 - "$work/out/class.csv" "$work/out/class.html" <<'PY' || { cat "$work/log"; fail "the class view is wrong (above)"; }
 import csv, re, sys
 rows = {r["submission"]: r for r in csv.DictReader(open(sys.argv[1]))}
-want = {"class.html (2)", "alice", "alice (2)", "'=HYPERLINK(\"x\")", "javascript:alert(1)", "dave"}
+want = {"(maximum)", "(maximum) (2)", "class.html (2)", "alice", "alice (2)", "'=HYPERLINK(\"x\")", "javascript:alert(1)", "dave"}
 assert set(rows) == want, sorted(rows)
 assert all(float(r["m1"]) == 2 for r in rows.values()), rows
 links = re.findall(r'href="([^"]*)"', open(sys.argv[2]).read())
@@ -698,6 +723,61 @@ CPP
       --only m3.builders "$work/sub" >"$work/log" 2>&1 || { cat "$work/log"; fail "grading failed"; }
     [ "$(score "$work/seed/results.json")" = 0 ] || fail "the memorizing translate() scored on a variant"
     grep -q "inputs drawn for this grading" "$work/seed/results.json" || fail "the finding does not say why"
+    ;;
+  hidden)
+    # hidden.json is checked before anything is graded, and a wrong entry is refused by its
+    # number and name, with what is wrong: a scene of another milestone, points that are not a
+    # whole number above 0, a public checkpoint's name, a seed in quotes.
+    make_submission "$work/sub"
+    bad() {  # bad <entry-json> <text the refusal must hold>...
+      local entry=$1; shift
+      mkdir -p "$work/bad"
+      printf '{"checkpoints": [\n {"name": "hidden.ok", "milestone": "m1", "scene": "m1.octant_1", "seed": 1},\n %s\n]}\n' \
+        "$entry" >"$work/bad/hidden.json"
+      local rc=0
+      bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out-bad" --hidden "$work/bad" "$work/sub" \
+        >"$work/bad.log" 2>&1 || rc=$?
+      [ "$rc" = 2 ] || { cat "$work/bad.log"; fail "a hidden.json with $entry: exit status $rc, not 2"; }
+      [ ! -e "$work/out-bad" ] || fail "a hidden.json with $entry: something was graded"
+      for want in "entry 2" "$@"; do
+        grep -qF -- "$want" "$work/bad.log" || { cat "$work/bad.log"; fail "the refusal of $entry does not say '$want'"; }
+      done
+      if grep -q "json.exception" "$work/bad.log"; then cat "$work/bad.log"; fail "the refusal of $entry is the JSON library's"; fi
+    }
+    bad '{"name": "hidden.oops", "milestone": "m2", "scene": "m1.octant_2", "seed": 5}' \
+      "hidden.oops" "belongs to milestone m1, not m2"
+    bad '{"name": "hidden.neg", "milestone": "m1", "scene": "m1.octant_2", "seed": 5, "points": -2}' \
+      "hidden.neg" '"points" must be a whole number'
+    bad '{"name": "hidden.half", "milestone": "m1", "scene": "m1.octant_2", "seed": 5, "points": 1.5}' \
+      "hidden.half" '"points" must be a whole number'
+    bad '{"name": "m1.octant_2", "milestone": "m1", "scene": "m1.octant_2", "seed": 5}' \
+      "m1.octant_2 is the name of a public checkpoint"
+    bad '{"name": "hidden.ok", "milestone": "m1", "scene": "m1.octant_2", "seed": 5}' "entry 1 has the same name"
+    bad '{"name": "hidden.text", "milestone": "m1", "scene": "m1.octant_2", "seed": "5"}' \
+      "hidden.text" '"seed" must be a whole number' "a string"
+    # A good one is graded, and the console shows the instructor the grade with the hidden points
+    # besides the students' visible summary.
+    mkdir -p "$work/good"
+    printf '{"checkpoints": [{"name": "hidden.steep", "milestone": "m1", "scene": "m1.octant_2", "seed": 9127, "points": 3}]}\n' \
+      >"$work/good/hidden.json"
+    bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 --milestones m1 \
+      --only m1.octant_1,hidden.steep --hidden "$work/good" "$work/sub" >"$work/log" 2>&1 ||
+      { cat "$work/log"; fail "grading with a good hidden.json failed"; }
+    grep -q '^Visible checkpoints: m1: 2/2\.' "$work/log" || { cat "$work/log"; fail "no visible summary"; }
+    grep -q '^Score 5 / 5 with the 1 hidden checkpoint' "$work/log" || { cat "$work/log"; fail "the console does not show the grade"; }
+    if grep -q 'Score 5' "$work/out/results.json"; then fail "results.json's visible output gives the total away"; fi
+    # README's example grade has the rubric's maxima.
+    totals=$(for m in m1 m2 m3 m4 m5; do
+               "$build/checkpoints/raster_grade" plan "$root/checkpoints/rubric.json" "$m" 0 | awk -v m="$m" '{ s += $5 } END { print m, s }'
+             done)
+    python3 - "$root/README.md" "$totals" <<'PY' || fail "README.md's example grade does not have checkpoints/rubric.json's maxima (above)"
+import re, sys
+line = next(l for l in open(sys.argv[1]) if l.startswith("Score ") and "Scene seed" in l)
+maxima = dict(l.split() for l in sys.argv[2].splitlines())
+assert int(re.search(r" / (\d+)\.", line).group(1)) == sum(int(v) for v in maxima.values()), line
+for m, got in re.findall(r"(m\d): \d+/(\d+)\.", line):
+    assert got == maxima[m], f"{m}: {got} in README.md, {maxima[m]} in the rubric"
+PY
     ;;
   *) fail "unknown case" ;;
 esac

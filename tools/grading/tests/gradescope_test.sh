@@ -5,9 +5,32 @@
 # run run_autograder; results.json must give full marks with Gradescope's fields; then
 # milestone 1's skeleton alone must score 0.
 #   gradescope_test.sh <uid-unused>
+#   gradescope_test.sh dirty     (fast, no root: only that uncommitted changes are told as left out)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../../.." && pwd)
+if [ "${1:-}" = dirty ]; then
+  # In a clone (with this tree's gradescope-package, committed there): a clean tree packs with
+  # no warning; a changed rubric and an untracked file are each named on stderr as NOT in the
+  # package, and the package holds the committed rubric.
+  work=$(mktemp -d /tmp/gradescope-dirty.XXXXXX)
+  trap 'rm -rf "$work"' EXIT
+  git clone -q "$root" "$work/repo"
+  cp "$root/tools/grading/gradescope-package" "$work/repo/tools/grading/gradescope-package"
+  git -C "$work/repo" -c user.name=test -c user.email=test@example.org commit -qam "this tree's package script" || true
+  bash "$work/repo/tools/grading/gradescope-package" "$work/clean.zip" 2>"$work/clean.err"
+  if grep -q WARNING "$work/clean.err"; then cat "$work/clean.err"; echo "FAIL: a clean tree is warned about"; exit 1; fi
+  printf '\n' >>"$work/repo/checkpoints/rubric.json"
+  : >"$work/repo/checkpoints/notes.txt"
+  bash "$work/repo/tools/grading/gradescope-package" "$work/dirty.zip" 2>"$work/dirty.err"
+  for want in "NOT in it" "M checkpoints/rubric.json" "?? checkpoints/notes.txt"; do
+    grep -qF -- "$want" "$work/dirty.err" || { cat "$work/dirty.err"; echo "FAIL: the warning does not say '$want'"; exit 1; }
+  done
+  unzip -p "$work/dirty.zip" checkpoints/rubric.json | cmp -s - <(git -C "$work/repo" show HEAD:checkpoints/rubric.json) ||
+    { echo "FAIL: the package's rubric is not the committed one"; exit 1; }
+  echo "ok: uncommitted changes are told as left out"
+  exit 0
+fi
 [ "$(id -u)" = 0 ] || { echo "skipped: needs root"; exit 77; }
 work=$(mktemp -d /tmp/gradescope-test.XXXXXX)
 trap 'rm -rf "$work"' EXIT
