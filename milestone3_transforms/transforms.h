@@ -51,8 +51,10 @@
 //    fields of view of 1 and 179 degrees, models 1e6 units away, vertices exactly in the
 //    camera's plane). What each function returns for NaN, infinities, coordinates near 1e308
 //    and subnormals is said below (rotate, inverse, look_at, the projections, clipping), and
-//    the checkpoint m3.nonfinite tests those answers; draw_model drops any triangle or edge
-//    with a non-finite clip coordinate, or with an index outside [0, positions.size()). The project also fuzzes the reference with such input
+//    the checkpoint m3.nonfinite tests those answers. draw_model must skip a triangle or edge
+//    with an index outside [0, positions.size()) (tested); one with a non-finite clip
+//    coordinate draws nothing without a check of yours (milestones 1 and 2 draw nothing for a
+//    non-finite point), so whether you skip it first is yours. The project also fuzzes the reference with such input
 //    under AddressSanitizer and UndefinedBehaviorSanitizer; `make fuzz-m3 FUZZ_STUDENT=1` in
 //    your build folder does the same to your code (it needs clang).
 #pragma once

@@ -70,6 +70,7 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"bezier", {"TODO 9", "three rounds of linear interpolation at t"}},
         {"painter", {"TODO 10", "sort by mean view-space z, most negative first"}},
         {"pipeline", {"TODO 11", "run only the stages in Needs and count each as transforms.h says"}},
+        {"face colors", {"TODO 11", "fill triangle i with model.face_colors[i], white where the list is shorter"}},
     };
 }
 

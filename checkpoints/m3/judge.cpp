@@ -15,6 +15,7 @@
 #include <numbers>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "harness/diagnosis.h"
 #include "m3/render.h"
@@ -168,6 +169,24 @@ std::vector<Vec4> clip_keeping_outside(std::vector<Vec4> poly) {
             const Vec4 a = poly[i], b = poly[(i + 1) % poly.size()];
             const double da = plane_distances(a)[std::size_t(plane)], db = plane_distances(b)[std::size_t(plane)];
             if (da < 0) next.push_back(a);
+            if ((da >= 0) != (db >= 0)) next.push_back(a + (b - a) * (da / (da - db)));
+        }
+        poly = next;
+    }
+    if (poly.size() < 3) poly.clear();
+    return poly;
+}
+
+// Sutherland-Hodgman with the near plane at z >= 0 (Direct3D's depth range [0, 1]) in place of
+// z >= -w: what a clipper written for the other clip-space convention returns.
+std::vector<Vec4> clip_near_at_zero(std::vector<Vec4> poly) {
+    auto dist = [](Vec4 q, int plane) { return plane == 4 ? q.z : plane_distances(q)[std::size_t(plane)]; };
+    for (int plane = 0; plane < 6 && !poly.empty(); ++plane) {
+        std::vector<Vec4> next;
+        for (std::size_t i = 0; i < poly.size(); ++i) {
+            const Vec4 a = poly[i], b = poly[(i + 1) % poly.size()];
+            const double da = dist(a, plane), db = dist(b, plane);
+            if (da >= 0) next.push_back(a);
             if ((da >= 0) != (db >= 0)) next.push_back(a + (b - a) * (da / (da - db)));
         }
         poly = next;
@@ -577,7 +596,16 @@ void judge_group(Group g, Ctx& c) {
                     c.add("multiplication order", "TODO 1: your A * B equals B * A. Entry (i, j) of A * B is row i of A "
                                                   "times column j of B");
                 } else {
-                    c.add("matrix", "TODO 1: A * B is wrong: got " + str(ab) + ", expected " + str(mul(a, b)));
+                    // One factor (or the product) read with rows and columns exchanged: m[col][row].
+                    std::string which;
+                    if (same(ab, mul(transpose(a), b))) which = "A^T * B: A is read as a[k][i] where a[i][k] is meant";
+                    else if (same(ab, mul(a, transpose(b)))) which = "A * B^T: B is read as b[j][k] where b[k][j] is meant";
+                    else if (same(ab, transpose(mul(a, b)))) which = "(A * B)^T: the result is stored as r[j][i]";
+                    c.add("matrix", "TODO 1: A * B is wrong: got " + str(ab) + ", expected " + str(mul(a, b)) +
+                                        (which.empty() ? std::string()
+                                                       : "; yours equals " + which +
+                                                             ". Entry (i, j) of A * B = sum over k of a[i][k] * b[k][j]: "
+                                                             "row i of A times column j of B, with Mat4 stored m[row][col]"));
                 }
             }
             if (!same(mat(v, "at"), transpose(a))) c.add("matrix", "TODO 1: transpose(A) is wrong: got " + str(mat(v, "at")));
@@ -669,9 +697,9 @@ void judge_group(Group g, Ctx& c) {
             break;
         }
         case Group::kInverse: {
-            for (int k = 0; k < 5; ++k) {
+            for (int k = 0; k < 6; ++k) {
                 const std::string key = "inv" + std::to_string(k);
-                const bool singular = k >= 3;
+                const bool singular = k == 3 || k == 4;
                 const double ok = get(v, key + ".ok");
                 if (singular) {
                     if (ok != 0) {
@@ -679,7 +707,11 @@ void judge_group(Group g, Ctx& c) {
                                              " is singular, but inverse() returned true; report a zero pivot");
                     }
                 } else if (ok != 1) {
-                    c.add("inverse", "TODO 3a: matrix " + std::to_string(k) + " is invertible, but inverse() returned false");
+                    c.add("inverse", "TODO 3a: matrix " + std::to_string(k) + " is invertible, but inverse() returned false" +
+                                         (k == 5 ? std::string(" (its first pivot is 1e-17, though its other entries are 1 "
+                                                               "and the matrix is far from singular: pivot on the row with "
+                                                               "the LARGEST |entry| of the column, a row swap here)")
+                                                 : std::string()));
                 } else {
                     const Matrix a = mat(v, key), b = mat(c.ref, key);
                     // Every entry of the right size, some of the wrong sign: the cofactors' signs.
@@ -687,8 +719,13 @@ void judge_group(Group g, Ctx& c) {
                     for (int i = 0; i < 4; ++i) {
                         for (int j = 0; j < 4; ++j) sizes &= close(std::abs(a[i][j]), std::abs(b[i][j]));
                     }
-                    const std::string what = "TODO 3a: the inverse of matrix " + std::to_string(k) +
-                                             (k == 1 ? " (its first pivot needs a row swap)" : "");
+                    const std::string what =
+                        "TODO 3a: the inverse of matrix " + std::to_string(k) +
+                        (k == 1   ? " (its first pivot needs a row swap)"
+                         : k == 5 ? " (its first pivot is 1e-17 beside a 1: Gauss-Jordan must swap in the row with "
+                                    "the LARGEST |entry| of the column (partial pivoting), not only a zero pivot; "
+                                    "dividing by 1e-17 makes every later entry 1e17 times too large to keep its digits)"
+                                  : "");
                     if (same(a, b)) continue;
                     if (sizes) {
                         c.add("inverse",
@@ -806,9 +843,19 @@ void judge_group(Group g, Ctx& c) {
                     c.add("handedness", "TODO 4: " + what + ". Your right vector points left: r = cross(f, up), not "
                                                              "cross(up, f), so that r, u, -f is right-handed");
                 } else if (fallback) {
+                    const std::map<std::string, std::string> pinned = {
+                        {"down", ": f = (0, -1, 0) is parallel to up, so up is replaced by the world axis along which "
+                                 "|f| has its SMALLEST component, the first on a tie: x, so up = (1, 0, 0)"},
+                        {"same", ": eye == target gives no direction, so f = (0, 0, -1); up (0, 1, 0) is not "
+                                 "parallel to it and stays"},
+                        {"noup", ": up is zero, so it is replaced by the world axis along which |f| = (1, 0, 0) has "
+                                 "its SMALLEST component, the first on a tie: y (0 beside z's 0), so up = (0, 1, 0)"},
+                    };
                     c.add("look at fallback", "TODO 4: " + what + (finite ? "" : " (NaN!)") +
-                                                  ". transforms.h pins the fallback for up parallel to the view and for "
-                                                  "eye == target");
+                                                  ". transforms.h pins the fallback" +
+                                                  (pinned.count(key) ? pinned.at(key)
+                                                                     : std::string(" for up parallel to the view and for "
+                                                                                   "eye == target")));
                 } else {
                     c.add("look at", "TODO 4: " + what);
                 }
@@ -832,7 +879,23 @@ void judge_group(Group g, Ctx& c) {
                               "from the bottom of the view to the top, so f = 1 / tan(fovy / 2)",
                           "halve fovy: the half angle, from the view's axis to its top edge, sets f");
                 } else {
-                    c.add("projection", "TODO 5: perspective(90, 2, 1, 10) = " + str(p) + ", expected " + str(pr));
+                    // The reference's matrix with a few entries changed: a known other convention.
+                    auto reference_but = [&](std::initializer_list<std::tuple<int, int, double>> changes) {
+                        Matrix q = pr;
+                        for (const auto& [i, j, x] : changes) q[std::size_t(i)][std::size_t(j)] = x;
+                        return same(p, q);
+                    };
+                    std::string why;
+                    if (reference_but({{2, 2, 10.0 / (1 - 10)}, {2, 3, 10.0 / (1 - 10)}})) {
+                        why = ": its third row maps the depth range onto [0, 1], Direct3D's convention (row (0, 0, "
+                              "far / (near - far), far near / (near - far))). This course's clip space is OpenGL's: "
+                              "z_ndc runs from -1 at the near plane to 1 at the far one, so the row is (0, 0, "
+                              "(far + near) / (near - far), 2 far near / (near - far))";
+                    } else if (reference_but({{0, 0, 2}})) {
+                        why = ": x is scaled by f * aspect = 2; expected f / aspect = 0.5. aspect = width / height, "
+                              "and a wide view must fit more of the scene across, so x shrinks: m[0][0] = f / aspect";
+                    }
+                    c.add("projection", "TODO 5: perspective(90, 2, 1, 10) = " + str(p) + ", expected " + str(pr) + why);
                 }
             }
             const std::pair<const char*, const char*> calls[] = {
@@ -948,7 +1011,13 @@ void judge_group(Group g, Ctx& c) {
                         }
                     }
                 }
-                if (!wrong_point.empty()) {
+                if (same_polygon(a, clip_near_at_zero({tris[k][0], tris[k][1], tris[k][2]}))) {
+                    c.add("near plane", "TODO 7a: " + what + ": yours is the triangle clipped against z >= 0 as its near "
+                                        "plane, the clip space of a [0, 1] depth range (Direct3D's). This course's clip "
+                                        "space is OpenGL's: the near plane is z >= -w, so its distance is w + z, as "
+                                        "-w <= x, y, z <= w says for all six",
+                          "six planes, each distance >= 0 inside: w + x, w - x, w + y, w - y, w + z, w - z");
+                } else if (!wrong_point.empty()) {
                     c.add("clipping", "TODO 7a: " + what + ", but not the same points: " + wrong_point +
                                           (crossing_told ? ": a crossing point again"
                                                          : ". The triangle's vertices inside the volume are all there, so "
@@ -1231,6 +1300,44 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
         f.hint = "clip = projection * view * model * p: read a product right to left";
         c.j.findings.push_back(f);
     }
+    // Face colors: draw_model fills triangle i with model.face_colors[i]. A picture whose faces
+    // are all one of the scene's colors, where the expected one shows three or more, has the
+    // right shapes in the wrong colors (one index for every face).
+    if (s.fill && !c.expected.empty()) {
+        const auto it = art.images.find("main");
+        std::set<std::array<int, 3>> palette;
+        for (const Panel& panel : s.panels) {
+            for (const Item& item : panel.items) {
+                for (const Color& fc : item.mesh.face_colors) palette.insert({fc.r, fc.g, fc.b});
+            }
+        }
+        // The face colors a picture shows, and how many pixels have one.
+        auto faces = [&](const raster::Image& img, long long& pixels) {
+            std::set<std::array<int, 3>> used;
+            pixels = 0;
+            for (int y = 0; y < img.height(); ++y) {
+                for (int x = 0; x < img.width(); ++x) {
+                    const Color px = img.at(x, y);
+                    if (palette.count({px.r, px.g, px.b})) used.insert({px.r, px.g, px.b}), ++pixels;
+                }
+            }
+            return used;
+        };
+        if (it != art.images.end() && it->second.width() == c.expected.width() &&
+            it->second.height() == c.expected.height()) {
+            long long mine_px = 0, want_px = 0;
+            const auto mine = faces(it->second, mine_px), want = faces(c.expected, want_px);
+            if (want.size() >= 3 && mine.size() == 1 && 2 * mine_px >= want_px) {
+                const auto& one = *mine.begin();
+                c.add("face colors", "TODO 11: every face is filled in one color, (" + std::to_string(one[0]) + ", " +
+                                         std::to_string(one[1]) + ", " + std::to_string(one[2]) + "), where the expected " +
+                                         "picture shows " + std::to_string(want.size()) + " of the model's face colors: "
+                                         "triangle i takes model.face_colors[i] (white when the list is shorter), the "
+                                         "index of the triangle being filled, not a fixed one",
+                      "fill model.triangles[i] with model.face_colors[i]");
+            }
+        }
+    }
     // The stage counts.
     static const char* kStats[][3] = {
         {"vertices_transformed", "pipeline", "vertices transformed (each position once)"},
@@ -1270,9 +1377,10 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
                                         "space; then each fan triangle of the clipped polygon goes to the screen and "
                                         "is culled there (a triangle crossing the near plane has no screen position "
                                         "before it is clipped, so its winding is not known yet)"
-                                      : ". Testing only w <= 0 (behind the camera) misses the triangles that cross a "
-                                        "side, the top, the bottom or the far plane; test all six planes, as "
-                                        "clip_polygon does";
+                                      : ". Two causes are common: a triangle sent to clip_polygon but not counted "
+                                        "(count each one you send), or the test of which to send: testing only "
+                                        "w <= 0 (behind the camera) misses the triangles that cross a side, the top, "
+                                        "the bottom or the far plane; test all six planes, as clip_polygon does";
             }
             c.add(st[1], "TODO 11: " + num(mine) + " " + st[2] + ", expected " + num(ref) + why);
             if (key == "stats.triangles_clipped" && mine < ref) {
@@ -1340,9 +1448,12 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
         return camera_ok && clipper_ok && !c.expected.empty() && it != art.images.end() &&
                strict_diffs(it->second, c.expected, c.j.tolerance) > 0;
     }();
-    bool culled_ok = true;
-    for (const cp::Finding& f : c.j.findings) culled_ok &= f.topic != "culling";
-    if (s.painter && counts_ok && differs && !use_wrong) {
+    bool culled_ok = true, colors_told = false;
+    for (const cp::Finding& f : c.j.findings) {
+        culled_ok &= f.topic != "culling";
+        colors_told |= f.topic == "face colors";  // then the picture's difference is explained
+    }
+    if (s.painter && counts_ok && differs && !use_wrong && !colors_told) {
         c.add("painter",
               "TODO 11: painter_order passes its own checks (m3.painter's numbers), and so do the "
               "matrices and the clipper, yet the picture differs where no edge is "
@@ -1358,7 +1469,7 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
                                           : ""),
               "order = painter_order of the VIEW-space triangles (view * model_matrix * p, before "
               "the projection), then fill model.triangles[order[0]], [order[1]], ... in that order");
-    } else if (camera_ok && clipper_ok && clipped_any && !use_wrong && culled_ok) {
+    } else if (camera_ok && clipper_ok && clipped_any && !use_wrong && culled_ok && !colors_told) {
         const raster::Image& expected = c.expected;
         const auto it = art.images.find("main");
         if (!expected.empty() && it != art.images.end() &&
