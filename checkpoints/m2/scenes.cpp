@@ -94,7 +94,11 @@ std::vector<Scene> make_scenes() {
                         solid({36.1, 2.2}, {60.8, 3.9}, {59.3, 29.4}, kPalette[1]),   // right-angled-ish
                         solid({3.2, 33.3}, {61.7, 36.1}, {20.4, 42.6}, kPalette[2]),  // wide and obtuse
                         solid({40.6875, 44.125}, {44.1875, 62.8125}, {30.875, 61.3125}, kPalette[3]),  // on the 1/16 grid
-                        solid({5.5, 47.25}, {22.75, 62.5}, {5.5, 62.5}, kPalette[4])});
+                        solid({5.5, 47.25}, {22.75, 62.5}, {5.5, 62.5}, kPalette[4]),
+                        // Legs through pixel centers at opposite corners to the one before: mirrored
+                        // or turned, one of the two keeps a bottom or a right leg, whose centers
+                        // the top-left rule leaves out (every variant tests the rule).
+                        solid({48.5, 45.5}, {61.5, 45.5}, {61.5, 58.5}, kPalette[5])});
         s.check_winding = true;
         all.push_back(s);
     }
