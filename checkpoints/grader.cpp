@@ -537,8 +537,10 @@ int cmd_report(const std::vector<std::string>& args) {
                              {"output", output},
                              {"visibility", hidden ? "after_published" : "visible"}});
             const std::string status = v.value("status", std::string("error"));
-            rows << "<tr><td><a href=\"#" << html_escape(m + "-" + cname) << "\">" << html_escape(cname)
-                 << "</a></td><td class=\"" << (status == "pass" ? "pass" : "fail") << "\">" << html_escape(status)
+            // A milestone that was not built has one section, its reason (below), which its
+            // checkpoints' rows link to: not a box per checkpoint repeating it.
+            rows << "<tr><td><a href=\"#" << html_escape(compiled ? m + "-" + cname : m + "-compile") << "\">" << html_escape(cname)
+                 << (hidden ? " (hidden)" : "") << "</a></td><td class=\"" << (status == "pass" ? "pass" : "fail") << "\">" << html_escape(status)
                  << "</td><td>" << fmt_points(got) << " / " << fmt_points(max) << "</td><td>"
                  << html_escape(join(v.value("concepts", std::vector<std::string>{}), ", ")) << "</td><td>"
                  << std::fixed << std::setprecision(3);
@@ -550,10 +552,13 @@ int cmd_report(const std::vector<std::string>& args) {
             rows << "</td><td>"
                  << v.value("reference_ms", 0.0) << "</td><td>"
                  << (v.value("has_metrics", false) && !v.value("numbers_only", false)
-                         ? std::to_string(v["student"].value("differing_pixels", 0LL))
+                         ? std::to_string(v["student"].value("differing_pixels", 0LL)) +
+                               // a passing picture's differences are all within the rule's tolerance
+                               (status == "pass" && v["student"].value("differing_pixels", 0LL) > 0 ? " (allowed)" : "")
                          : "")
                  << "</td></tr>\n";
             rows.unsetf(std::ios::fixed);
+            if (!compiled) continue;
             // Sections of checkpoints that lost points first, then the full-marks ones.
             std::ostringstream& sec = got >= max ? passing : sections;
             sec << "<section id=\"" << html_escape(m + "-" + cname) << "\"><h3>" << html_escape(m + " " + cname)

@@ -524,6 +524,14 @@ std::string picture_caption(const std::string& milestone, const std::string& nam
                "alone; if it differs from that checkpoint's expected picture, fix fill_triangle first";
     }
     if (name == "error_vs_time") return "error_vs_time: error against run time, yours beside the reference's";
+    if (name == "other_winding") {
+        return "other_winding: the same triangles, each with its vertices in the other order (the other winding); "
+               "it must have the same pixels as your main picture";
+    }
+    if (name == "count") {
+        return "count: how many of your triangles cover each pixel (black none, gray one, red two or more: "
+               "a pixel two triangles both take, on a shared edge)";
+    }
     return name;
 }
 

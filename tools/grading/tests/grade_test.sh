@@ -133,6 +133,12 @@ case "$case_name" in
     [ "$(score "$r" m1)" = "$(max_score "$r" m1)" ] || fail "m1 lost points for m2's compile error"
     [ "$(score "$r" m3)" = "$(max_score "$r" m3)" ] || fail "m3 lost points for m2's compile error"
     grep -q "not C++" "$r" || fail "the compile log is not in results.json"
+    # report.html: one section for the milestone not built (its reason), which its checkpoints'
+    # rows link to, not a box per checkpoint repeating it.
+    h=$work/out/report.html
+    grep -q 'id="m2-compile"' "$h" || fail "report.html has no section for m2's compile error"
+    grep -q 'href="#m2-compile">m2.top_left' "$h" || fail "m2's rows do not link to its compile error"
+    if grep -q 'id="m2-m2.top_left"' "$h"; then fail "report.html repeats the compile error per checkpoint"; fi
     ;;
   missing_file)
     # A file the grader cannot take is a missing file, told to the student with what was found:
@@ -412,7 +418,7 @@ PY
     python3 - "$work/out/class.csv" <<'PY' || { cat "$work/log"; fail "class.csv is wrong"; }
 import csv, sys
 rows = {r["submission"]: r for r in csv.DictReader(open(sys.argv[1]))}
-assert set(rows) == {"alice", "bomb", "mallory_run_classmate", "mallory_leave_files"}, rows.keys()
+assert set(rows) == {"(maximum)", "alice", "bomb", "mallory_run_classmate", "mallory_leave_files"}, rows.keys()
 assert float(rows["alice"]["m1"]) == 5, rows["alice"]
 for who in ("bomb", "mallory_run_classmate", "mallory_leave_files"):
     assert float(rows[who]["m1"]) == 0, rows[who]
