@@ -1299,6 +1299,20 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
         f.todo = "TODO 11";
         f.hint = "clip = projection * view * model * p: read a product right to left";
         c.j.findings.push_back(f);
+    } else if (const double o2 = get(c.mine, "use.order2.x"), r2 = get(c.ref, "use.order2.x");
+               get(c.ref, "use.order2.n") > 0 && std::abs(o2 - r2) > 2) {
+        // The model matrix in its place, the view and the projection exchanged.
+        cp::Finding f{"pipeline",
+                      "draw_model puts a test triangle in the wrong place: drawn with model = identity, view = a "
+                      "move right by 0.5 and projection = a halving on a 48-pixel image, its pixels " +
+                          (get(c.mine, "use.order2.n") > 0 ? "centre on x = " + num(o2) : std::string("are nowhere")) +
+                          " where the reference's centre on x = " + num(r2) +
+                          ". The projection acts LAST: projection * view * model * p moves the triangle and then "
+                          "halves everything, x = 30. (view * projection * model halves it before the move, which "
+                          "puts it at x = 36.)"};
+        f.todo = "TODO 11";
+        f.hint = "clip = projection * view * model * p: read a product right to left";
+        c.j.findings.push_back(f);
     }
     // Face colors: draw_model fills triangle i with model.face_colors[i]. A picture whose faces
     // are all one of the scene's colors, where the expected one shows three or more, has the

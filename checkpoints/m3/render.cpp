@@ -454,6 +454,25 @@ void draw_model_use(const Scene& s, cp::Artifacts& out) {
         out.values["use.order.n"] = n;
         out.values["use.order.x"] = n > 0 ? sum_x / n : -1;
         out.stray_writes += img.stray_writes();
+        // The view and the projection: view = that move, projection = that halving. projection *
+        // view * model puts the middle at pixel 30 again; view * projection * model (the halving
+        // before the move) at pixel 36.
+        Mat4 move = id, halve = id;
+        move.m[0][3] = 0.5;
+        halve.m[0][0] = halve.m[1][1] = halve.m[2][2] = 0.5;
+        raster::Image img2 = cp::guarded_image(48, 48);
+        cp::traced(*g_out, "draw_model", img2, [&] { return m3::draw_model(img2, tri, id, move, halve, {true, false, false, false, false}, {}); });
+        n = sum_x = 0;
+        for (int y = 0; y < img2.height(); ++y) {
+            for (int x = 0; x < img2.width(); ++x) {
+                if (img2.at(x, y) == raster::Color{}) continue;
+                n += 1;
+                sum_x += x + 0.5;
+            }
+        }
+        out.values["use.order2.n"] = n;
+        out.values["use.order2.x"] = n > 0 ? sum_x / n : -1;
+        out.stray_writes += img2.stray_writes();
     }
     if (s.cull) {
         for (int way = 0; way < 2; ++way) {
