@@ -1271,12 +1271,29 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
         camera_ok &= c.matrix(key + ".proj", "projection", std::string("TODO 5: the ") + (s.panels[p].camera.ortho ? "orthographic" : "perspective") +
                                                          " matrix of this scene (m3.projection has the details)");
     }
-    // The order of the product (render.cpp, draw_model_use): a test triangle drawn with a
-    // move as the model matrix and a halving as the view. The matrix functions it is drawn
-    // with pass their own checks (else the judge says "fix TODO N first"), so a triangle in
-    // another place comes from how draw_model combines the matrices.
-    const double order_mine = get(c.mine, "use.order.x"), order_ref = get(c.ref, "use.order.x");
-    if (get(c.ref, "use.order.n") > 0 && std::abs(order_mine - order_ref) > 2) {
+    // The order of the product (render.cpp, draw_model_use): a test triangle drawn twice, with
+    // a move and a halving as two of the three matrices. The matrix functions it is drawn with
+    // pass their own checks (else the judge says "fix TODO N first"), so a triangle in another
+    // place comes from how draw_model combines the matrices. The first placement that is wrong
+    // is told.
+    struct Placement {
+        const char* key;
+        const char* matrices;  // what the triangle was drawn with
+        const char* why;       // the rule, and where the mistake puts the triangle
+    };
+    static const Placement kPlacements[] = {
+        {"use.order", "model = a move right by 0.5, view = a halving and projection = identity",
+         "Each clip-space position is projection * view * model * p: the rightmost matrix acts first, so the model "
+         "matrix stands next to the point: the move, then the halving, puts the triangle at x = 30. (model * view * "
+         "projection halves the triangle but not the move, which puts it at x = 36.)"},
+        {"use.order2", "model = identity, view = a move right by 0.5 and projection = a halving",
+         "The projection acts LAST: projection * view * model * p moves the triangle and then halves everything, "
+         "x = 30. (view * projection * model halves it before the move, which puts it at x = 36.)"},
+    };
+    for (const Placement& pl : kPlacements) {
+        const std::string key = pl.key;
+        const double mine_x = get(c.mine, key + ".x"), ref_x = get(c.ref, key + ".x");
+        if (!(get(c.ref, key + ".n") > 0 && std::abs(mine_x - ref_x) > 2)) continue;
         std::string list;  // the matrix functions' checkpoints (not clipping, culling or painter's)
         for (Group g : prerequisite_groups(s)) {
             if (g != Group::kMatrixOps && g != Group::kBuilders && g != Group::kRodrigues && g != Group::kLookAt &&
@@ -1288,31 +1305,14 @@ void judge_picture(Ctx& c, const cp::Artifacts& art) {
         }
         cp::Finding f{"pipeline",
                       "the matrix functions this picture is drawn with " + std::string(cp::kPassOwnChecks) + " (" +
-                          list + "), yet draw_model puts a test triangle in the wrong place: drawn with model = a move "
-                          "right by 0.5, view = a halving and projection = identity on a 48-pixel image, its pixels " +
-                          (get(c.mine, "use.order.n") > 0 ? "centre on x = " + num(order_mine) : std::string("are nowhere")) +
-                          " where the reference's centre on x = " + num(order_ref) +
-                          ". Each clip-space position is projection * view * model * p: the rightmost matrix acts "
-                          "first, so the model matrix stands next to the point: the move, then the halving, puts the "
-                          "triangle at x = 30. (model * view * projection halves the triangle but not the move, "
-                          "which puts it at x = 36.)"};
+                          list + "), yet draw_model puts a test triangle in the wrong place: drawn with " +
+                          pl.matrices + " on a 48-pixel image, its pixels " +
+                          (get(c.mine, key + ".n") > 0 ? "centre on x = " + num(mine_x) : std::string("are nowhere")) +
+                          " where the reference's centre on x = " + num(ref_x) + ". " + pl.why};
         f.todo = "TODO 11";
         f.hint = "clip = projection * view * model * p: read a product right to left";
         c.j.findings.push_back(f);
-    } else if (const double o2 = get(c.mine, "use.order2.x"), r2 = get(c.ref, "use.order2.x");
-               get(c.ref, "use.order2.n") > 0 && std::abs(o2 - r2) > 2) {
-        // The model matrix in its place, the view and the projection exchanged.
-        cp::Finding f{"pipeline",
-                      "draw_model puts a test triangle in the wrong place: drawn with model = identity, view = a "
-                      "move right by 0.5 and projection = a halving on a 48-pixel image, its pixels " +
-                          (get(c.mine, "use.order2.n") > 0 ? "centre on x = " + num(o2) : std::string("are nowhere")) +
-                          " where the reference's centre on x = " + num(r2) +
-                          ". The projection acts LAST: projection * view * model * p moves the triangle and then "
-                          "halves everything, x = 30. (view * projection * model halves it before the move, which "
-                          "puts it at x = 36.)"};
-        f.todo = "TODO 11";
-        f.hint = "clip = projection * view * model * p: read a product right to left";
-        c.j.findings.push_back(f);
+        break;
     }
     // Face colors: draw_model fills triangle i with model.face_colors[i]. A picture whose faces
     // are all one of the scene's colors, where the expected one shows three or more, has the

@@ -430,49 +430,38 @@ void draw_panels(const Scene& s, raster::Image& img, cp::Artifacts& out) {
 void draw_model_use(const Scene& s, cp::Artifacts& out) {
     const Mat4 id = m3::identity();
     {
-        // The order of the product: model = a move right by 0.5, view = a uniform halving,
-        // projection = identity. projection * view * model puts the triangle's middle at
-        // x = 0.25 (pixel 30 of 48); model * view * projection at x = 0.5 (pixel 36), twice as
-        // wide.
-        Mat4 model = id, view = id;
-        model.m[0][3] = 0.5;
-        view.m[0][0] = view.m[1][1] = view.m[2][2] = 0.5;
+        // The order of the product, on a small triangle: `key`.n = its pixels, `key`.x = their
+        // mean x (-1 for none). First model = a move right by 0.5, view = a uniform halving,
+        // projection = identity: projection * view * model puts the triangle's middle at
+        // x = 0.25 (pixel 30 of 48), model * view * projection at x = 0.5 (pixel 36), twice as
+        // wide. Then view = that move, projection = that halving: pixel 30 again, and view *
+        // projection * model (the halving before the move) at pixel 36.
+        Mat4 move = id, halve = id;
+        move.m[0][3] = 0.5;
+        halve.m[0][0] = halve.m[1][1] = halve.m[2][2] = 0.5;
         m3::Model tri;
         tri.positions = {{-0.3, -0.3, 0}, {0.3, -0.3, 0}, {0, 0.3, 0}};
         tri.triangles = {{0, 1, 2}};
         tri.face_colors = {{250, 250, 250}};
-        raster::Image img = cp::guarded_image(48, 48);
-        cp::traced(*g_out, "draw_model", img, [&] { return m3::draw_model(img, tri, model, view, id, {true, false, false, false, false}, {}); });
-        double n = 0, sum_x = 0;
-        for (int y = 0; y < img.height(); ++y) {
-            for (int x = 0; x < img.width(); ++x) {
-                if (img.at(x, y) == raster::Color{}) continue;
-                n += 1;
-                sum_x += x + 0.5;
+        auto place = [&](const std::string& key, const Mat4& model, const Mat4& view, const Mat4& projection) {
+            raster::Image img = cp::guarded_image(48, 48);
+            cp::traced(*g_out, "draw_model", img, [&] {
+                return m3::draw_model(img, tri, model, view, projection, {true, false, false, false, false}, {});
+            });
+            double n = 0, sum_x = 0;
+            for (int y = 0; y < img.height(); ++y) {
+                for (int x = 0; x < img.width(); ++x) {
+                    if (img.at(x, y) == raster::Color{}) continue;
+                    n += 1;
+                    sum_x += x + 0.5;
+                }
             }
-        }
-        out.values["use.order.n"] = n;
-        out.values["use.order.x"] = n > 0 ? sum_x / n : -1;
-        out.stray_writes += img.stray_writes();
-        // The view and the projection: view = that move, projection = that halving. projection *
-        // view * model puts the middle at pixel 30 again; view * projection * model (the halving
-        // before the move) at pixel 36.
-        Mat4 move = id, halve = id;
-        move.m[0][3] = 0.5;
-        halve.m[0][0] = halve.m[1][1] = halve.m[2][2] = 0.5;
-        raster::Image img2 = cp::guarded_image(48, 48);
-        cp::traced(*g_out, "draw_model", img2, [&] { return m3::draw_model(img2, tri, id, move, halve, {true, false, false, false, false}, {}); });
-        n = sum_x = 0;
-        for (int y = 0; y < img2.height(); ++y) {
-            for (int x = 0; x < img2.width(); ++x) {
-                if (img2.at(x, y) == raster::Color{}) continue;
-                n += 1;
-                sum_x += x + 0.5;
-            }
-        }
-        out.values["use.order2.n"] = n;
-        out.values["use.order2.x"] = n > 0 ? sum_x / n : -1;
-        out.stray_writes += img2.stray_writes();
+            out.values[key + ".n"] = n;
+            out.values[key + ".x"] = n > 0 ? sum_x / n : -1;
+            out.stray_writes += img.stray_writes();
+        };
+        place("use.order", move, halve, id);
+        place("use.order2", id, move, halve);
     }
     if (s.cull) {
         for (int way = 0; way < 2; ++way) {
