@@ -232,7 +232,8 @@ int cmd_judge(const std::vector<std::string>& args) {
         unreadable = true;
         student = cp::Artifacts{};
     }
-    const bool render_failed = !early.empty();
+    // Nothing was timed where the render failed or the watchdog stopped it.
+    const bool render_failed = !early.empty() || student.stopped;
     // Graded: the verdict on what the trusted side can check; what only the counts said is advice.
     // (When the render itself failed, that is the verdict and the whole one is kept below.)
     cp::GradedVerdict judged = cp::judge_for_grading(s, id, student, reference, expected);
@@ -544,13 +545,17 @@ int cmd_report(const std::vector<std::string>& args) {
                  << "</td><td>" << fmt_points(got) << " / " << fmt_points(max) << "</td><td>"
                  << html_escape(join(v.value("concepts", std::vector<std::string>{}), ", ")) << "</td><td>"
                  << std::fixed << std::setprecision(3);
-            if (v.value("render_failed", false)) {
-                rows << "&mdash;";  // the render did not finish: nothing was timed
+            if (!compiled) {
+                rows << "&mdash;</td><td>&mdash;";  // nothing of this milestone ran
             } else {
-                rows << v.value("student_ms", 0.0);
+                if (v.value("render_failed", false)) {
+                    rows << "&mdash;";  // the render did not finish: nothing was timed
+                } else {
+                    rows << v.value("student_ms", 0.0);
+                }
+                rows << "</td><td>" << v.value("reference_ms", 0.0);
             }
             rows << "</td><td>"
-                 << v.value("reference_ms", 0.0) << "</td><td>"
                  << (v.value("has_metrics", false) && !v.value("numbers_only", false)
                          ? std::to_string(v["student"].value("differing_pixels", 0LL)) +
                                // a passing picture's differences are all within the rule's tolerance
@@ -651,7 +656,13 @@ int cmd_report(const std::vector<std::string>& args) {
 
     html << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>Grade: " << html_escape(name)
          << "</title>" << kStyle << "</head><body><h1>Grade: " << html_escape(name) << "</h1><p>"
-         << html_escape(summary.str()) << "</p><table><tr><th>checkpoint</th><th>status</th><th>points</th>"
+         << html_escape(summary.str()) << "</p>";
+    if (hidden_count > 0) {  // the instructor's page: the grade, which results.json's summary keeps back
+        html << "<p><b>With the " << hidden_count << " hidden checkpoint" << (hidden_count == 1 ? "" : "s")
+             << ": " << fmt_points(score) << " / " << fmt_points(total)
+             << "</b> (the grade; students see it when the grades are published)</p>";
+    }
+    html << "<table><tr><th>checkpoint</th><th>status</th><th>points</th>"
          << "<th>concepts</th><th>your ms</th><th>reference ms</th><th>pixels differ</th></tr>\n"
          << rows.str() << "</table>\n" << notes.str() << sections.str()
          << (!sections.str().empty() && !passing.str().empty()
@@ -809,7 +820,7 @@ int cmd_class(const std::vector<std::string>& args) {
     html << "</table><h2>Checkpoints</h2><table><tr><th>checkpoint</th><th>failed by (of those that built its milestone)</th>"
             "<th>concepts</th></tr>\n";
     for (const std::string& c : order) {
-        if (graded[c] == 0) continue;  // no submission built its milestone
+        if (graded[c] == 0 || fails[c] == 0) continue;  // no submission built its milestone, or none failed it
         std::string concepts;
         std::vector<std::pair<int, std::string>> byc;
         for (const auto& [k, n] : concepts_of[c]) byc.push_back({-n, k});

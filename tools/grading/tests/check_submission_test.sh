@@ -104,13 +104,14 @@ attack fopen 'fopen' '#include <cstdio>
 void sneaky() { std::FILE* f = std::fopen("x", "w"); if (f) std::fclose(f); }'
 # make check's note (tools/code-check --advice, the same object step): the fopen object above
 # gets it, naming the call; the reference's gets none; neither fails the build.
-note=$(bash "$root/tools/code-check" --advice milestone1_lines/lines.cpp "$work/a-fopen/lines.cpp.o") ||
+bash "$root/tools/code-check" --advice milestone1_lines/lines.cpp "$work/a-fopen/lines.cpp.o" "$work/note.txt" ||
   fail "code-check --advice failed on a refused object"
+note=$(cat "$work/note.txt" 2>/dev/null)
 grep -q "Note: the grader would refuse milestone1_lines/lines.cpp" <<<"$note" && grep -q "fopen (file access)" <<<"$note" ||
   fail "make check's note does not name the refused call: $note"
-note=$(bash "$root/tools/code-check" --advice milestone1_lines/lines.cpp "$build/checkpoints/libm1_reference.a") ||
+bash "$root/tools/code-check" --advice milestone1_lines/lines.cpp "$build/checkpoints/libm1_reference.a" "$work/note.txt" ||
   fail "code-check --advice failed on the reference"
-[ -z "$note" ] || fail "make check's note speaks of the reference: $note"
+[ ! -e "$work/note.txt" ] || fail "make check's note speaks of the reference: $(cat "$work/note.txt")"
 echo "make check's note names the refused call, and says nothing of the reference"
 attack system 'processes' '#include <cstdlib>
 void sneaky() { (void)std::system("true"); }'
