@@ -959,7 +959,7 @@ int cmd_plan(const std::vector<std::string>& args) {
                 const json& jp = c.at("points");
                 if (!jp.is_number() || !(jp.get<double>() > 0) || jp.get<double>() != std::floor(jp.get<double>()) ||
                     jp.get<double>() > 1000) {
-                    throw std::invalid_argument(label + ": \"points\" must be a whole number of 1 or more (such as 3, no quotes), not " +
+                    throw std::invalid_argument(label + ": \"points\" must be a whole number from 1 to 1000 (such as 3, no quotes), not " +
                                                 written(jp));
                 }
                 points = jp.get<double>();

@@ -756,6 +756,8 @@ CPP
       "hidden.neg" '"points" must be a whole number'
     bad '{"name": "hidden.half", "milestone": "m1", "scene": "m1.octant_2", "seed": 5, "points": 1.5}' \
       "hidden.half" '"points" must be a whole number'
+    bad '{"name": "hidden.big", "milestone": "m1", "scene": "m1.octant_2", "seed": 5, "points": 5000}' \
+      "hidden.big" '"points" must be a whole number from 1 to 1000'
     bad '{"name": "m1.octant_2", "milestone": "m1", "scene": "m1.octant_2", "seed": 5}' \
       "m1.octant_2 is the name of a public checkpoint"
     bad '{"name": "hidden.ok", "milestone": "m1", "scene": "m1.octant_2", "seed": 5}' "entry 1 has the same name"
