@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
 #include <set>
@@ -159,16 +160,16 @@ bool beyond_any(const std::vector<Vec4>& p) {
     });
 }
 
-// Sutherland-Hodgman with the inside test turned round: each plane keeps the vertices OUTSIDE
-// it (da < 0) and adds the crossings. A clip_polygon whose every answer matches this one has
-// its keep test reversed.
-std::vector<Vec4> clip_keeping_outside(std::vector<Vec4> poly) {
+// Sutherland-Hodgman as a clipper that gets one rule wrong would run it: `dist(q, plane)` is
+// the signed distance it uses (>= 0 inside), and with `keep_outside` each plane keeps the
+// vertices OUTSIDE it (da < 0) while still adding the crossings.
+std::vector<Vec4> clip_as(std::vector<Vec4> poly, const std::function<double(Vec4, int)>& dist, bool keep_outside) {
     for (int plane = 0; plane < 6 && !poly.empty(); ++plane) {
         std::vector<Vec4> next;
         for (std::size_t i = 0; i < poly.size(); ++i) {
             const Vec4 a = poly[i], b = poly[(i + 1) % poly.size()];
-            const double da = plane_distances(a)[std::size_t(plane)], db = plane_distances(b)[std::size_t(plane)];
-            if (da < 0) next.push_back(a);
+            const double da = dist(a, plane), db = dist(b, plane);
+            if ((da >= 0) != keep_outside) next.push_back(a);
             if ((da >= 0) != (db >= 0)) next.push_back(a + (b - a) * (da / (da - db)));
         }
         poly = next;
@@ -176,23 +177,15 @@ std::vector<Vec4> clip_keeping_outside(std::vector<Vec4> poly) {
     if (poly.size() < 3) poly.clear();
     return poly;
 }
+double plane_distance(Vec4 q, int plane) { return plane_distances(q)[std::size_t(plane)]; }
 
-// Sutherland-Hodgman with the near plane at z >= 0 (Direct3D's depth range [0, 1]) in place of
-// z >= -w: what a clipper written for the other clip-space convention returns.
+// The keep test turned round: a clip_polygon whose every answer matches this one has it reversed.
+std::vector<Vec4> clip_keeping_outside(std::vector<Vec4> poly) { return clip_as(std::move(poly), plane_distance, true); }
+
+// The near plane at z >= 0 (Direct3D's depth range [0, 1]) in place of z >= -w: what a clipper
+// written for the other clip-space convention returns.
 std::vector<Vec4> clip_near_at_zero(std::vector<Vec4> poly) {
-    auto dist = [](Vec4 q, int plane) { return plane == 4 ? q.z : plane_distances(q)[std::size_t(plane)]; };
-    for (int plane = 0; plane < 6 && !poly.empty(); ++plane) {
-        std::vector<Vec4> next;
-        for (std::size_t i = 0; i < poly.size(); ++i) {
-            const Vec4 a = poly[i], b = poly[(i + 1) % poly.size()];
-            const double da = dist(a, plane), db = dist(b, plane);
-            if (da >= 0) next.push_back(a);
-            if ((da >= 0) != (db >= 0)) next.push_back(a + (b - a) * (da / (da - db)));
-        }
-        poly = next;
-    }
-    if (poly.size() < 3) poly.clear();
-    return poly;
+    return clip_as(std::move(poly), [](Vec4 q, int plane) { return plane == 4 ? q.z : plane_distance(q, plane); }, false);
 }
 
 // "(x, y, z, w) lies on the plane x = w" for the first vertex of `tri` inside the closed view
@@ -1165,10 +1158,6 @@ void mark_ambiguous_line_ends(const Scene& s, const Values& ref, raster::Mask& l
         for (int i = 0; i < 4; ++i) r[i] = m[i][0] * p.x + m[i][1] * p.y + m[i][2] * p.z + m[i][3];
         return Vec4{r[0], r[1], r[2], r[3]};
     };
-    auto dist = [](Vec4 p, int plane) {  // >= 0 inside: -w <= x, y, z <= w
-        const double c = plane / 2 == 0 ? p.x : plane / 2 == 1 ? p.y : p.z;
-        return plane % 2 == 0 ? p.w + c : p.w - c;
-    };
     // The pixel centers an end at coordinate v may snap to: both sides of a boundary it lies on.
     auto centers = [](double v) {
         const double k = std::round(v);
@@ -1190,7 +1179,7 @@ void mark_ambiguous_line_ends(const Scene& s, const Values& ref, raster::Mask& l
                 double t0 = 0, t1 = 1;
                 bool empty = false;
                 for (int plane = 0; plane < 6 && s.clip; ++plane) {
-                    const double da = dist(a, plane), db = dist(b, plane);
+                    const double da = plane_distance(a, plane), db = plane_distance(b, plane);
                     if (da < 0 && db < 0) empty = true;
                     else if (da < 0) t0 = std::max(t0, da / (da - db));
                     else if (db < 0) t1 = std::min(t1, da / (da - db));
