@@ -880,9 +880,10 @@ int cmd_plan(const std::vector<std::string>& args) {
         std::replace(t.begin(), t.end(), '\r', ' ');
         return t;
     };
+    std::ostringstream lines;  // printed only when hidden.json is right too
     for (const std::string& id : s.ids) {
         const auto it = r.points.find(id);
-        std::cout << id << " " << id << " " << seed << " visible "
+        lines << id << " " << id << " " << seed << " visible "
                   << fmt_points(it == r.points.end() ? r.default_points : it->second) << " " << clean(s.title(id)) << "\n";
     }
     if (args.size() >= 4 && !args[3].empty()) try {
@@ -898,8 +899,11 @@ int cmd_plan(const std::vector<std::string>& args) {
             for (const std::string& id : suite(rm).ids) milestone_of[id] = rm;
         }
         std::map<std::string, int> hidden_names;  // name -> entry
+        // Every wrong entry is told in one run (a file with three mistakes needs one fix, not three
+        // runs); the plan is printed only when all of them are right.
+        std::vector<std::string> errors;
         int entry = 0;
-        for (const json& c : h.at("checkpoints")) {
+        for (const json& c : h.at("checkpoints")) try {
             ++entry;
             std::string label = "entry " + std::to_string(entry);
             if (!c.is_object() || !c.contains("name") || !c.contains("milestone") || !c.contains("scene") ||
@@ -968,12 +972,21 @@ int cmd_plan(const std::vector<std::string>& args) {
             if (c.contains("title")) title = text("title");
             if (hm != m) continue;
             const std::uint64_t hseed = js.get<std::uint64_t>();
-            std::cout << name << " " << scene << " " << (seed == 0 ? hseed : mix(seed, hseed)) << " after_published "
-                      << fmt_points(points) << " " << clean(title.empty() ? s.title(scene) : title) << "\n";
+            lines << name << " " << scene << " " << (seed == 0 ? hseed : mix(seed, hseed)) << " after_published "
+                  << fmt_points(points) << " " << clean(title.empty() ? s.title(scene) : title) << "\n";
+        } catch (const std::invalid_argument& e) {
+            errors.push_back(e.what());
+        }
+        if (errors.size() == 1) throw std::invalid_argument(errors.front());
+        if (!errors.empty()) {
+            std::string all = std::to_string(errors.size()) + " entries need a fix:";
+            for (const std::string& e : errors) all += "\n  " + e;
+            throw std::invalid_argument(all);
         }
     } catch (const std::exception& e) {
         throw std::invalid_argument(args[3] + ": " + e.what());
     }
+    std::cout << lines.str();
     return 0;
 }
 

@@ -763,6 +763,18 @@ CPP
     bad '{"name": "hidden.ok", "milestone": "m1", "scene": "m1.octant_2", "seed": 5}' "entry 1 has the same name"
     bad '{"name": "hidden.text", "milestone": "m1", "scene": "m1.octant_2", "seed": "5"}' \
       "hidden.text" '"seed" must be a whole number' "a string"
+    # Several wrong entries are told in one run, each by its number, and no plan is printed.
+    printf '{"checkpoints": [\n {"name": "hidden.a", "milestone": "m1", "scene": "m1.octant_2", "seed": "5"},\n {"name": "hidden.b", "milestone": "m1", "scene": "m1.octant_3", "seed": 5},\n {"name": "hidden.c", "milestone": "m2", "scene": "m1.octant_2", "seed": 5}\n]}\n' \
+      >"$work/bad/hidden.json"
+    rc=0
+    "$build/checkpoints/raster_grade" plan "$root/checkpoints/rubric.json" m1 0 "$work/bad/hidden.json" \
+      >"$work/plan.out" 2>"$work/plan.err" || rc=$?
+    [ "$rc" != 0 ] || fail "a hidden.json with two wrong entries was planned"
+    [ ! -s "$work/plan.out" ] || { cat "$work/plan.out"; fail "a hidden.json with two wrong entries printed a plan"; }
+    for want in "2 entries need a fix" "entry 1 (hidden.a)" "entry 3 (hidden.c)"; do
+      grep -qF -- "$want" "$work/plan.err" || { cat "$work/plan.err"; fail "the refusal of two wrong entries does not say '$want'"; }
+    done
+    if grep -qF "entry 2" "$work/plan.err"; then cat "$work/plan.err"; fail "a right entry was told as wrong"; fi
     # A good one is graded, and the console shows the instructor the grade with the hidden points
     # besides the students' visible summary.
     mkdir -p "$work/good"
