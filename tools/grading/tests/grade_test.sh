@@ -123,7 +123,9 @@ case "$case_name" in
     # One milestone that does not compile costs that milestone only; given as a zip. (Two
     # checkpoints of each milestone are enough to show that the others keep their points.)
     printf 'this is not C++\n' >"$work/broken.cpp"
-    make_submission "$work/sub" "" "$work/broken.cpp"
+    # m4 includes the reference, which the grader's build does not have: told as such.
+    printf '#include "../../solutions/milestone4_depth_lighting/depth_lighting.cpp"\n' >"$work/borrowed.cpp"
+    make_submission "$work/sub" "" "$work/broken.cpp" "" "$work/borrowed.cpp"
     (cd "$work/sub" && zip -qr "$work/sub.zip" .)
     bash "$grade" --no-build --build "$build" --uid "$uid" --out "$work/out" --seed 1 \
       --only m1.octant_1,m1.outcodes,m2.top_left,m2.edge_and_box,m3.matrix_ops,m3.solid_cube,m4.depth_keys,m4.occlusion_order \
@@ -133,6 +135,8 @@ case "$case_name" in
     [ "$(score "$r" m1)" = "$(max_score "$r" m1)" ] || fail "m1 lost points for m2's compile error"
     [ "$(score "$r" m3)" = "$(max_score "$r" m3)" ] || fail "m3 lost points for m2's compile error"
     grep -q "not C++" "$r" || fail "the compile log is not in results.json"
+    [ "$(score "$r" m4)" = "0" ] || fail "m4 includes the reference, yet scores $(score "$r" m4)"
+    grep -q "anything from the course's solutions/" "$r" || fail "results.json does not say that solutions/ is not in the grader's build"
     # report.html: one section for the milestone not built (its reason), which its checkpoints'
     # rows link to, not a box per checkpoint repeating it.
     h=$work/out/report.html
