@@ -13,10 +13,17 @@ trap 'rm -rf "$work"' EXIT
 # folder meanwhile, so this test never builds in it (the archives' recipe is checked by CI's build).
 bash "$root/tools/export-handout" "$work/handout" --build "$build" --no-build
 h=$work/handout
-for gone in solutions tools/grading checkpoints/grader.cpp checkpoints/m1/bugs checkpoints/m1/variants; do
+for gone in solutions tools/grading checkpoints/grader.cpp checkpoints/m1/bugs checkpoints/m1/variants \
+           checkpoints/m3/judge.cpp checkpoints/m5/judge.cpp checkpoints/m5/bench.cpp checkpoints/bench_reference.cpp \
+           checkpoints/m5/oracle_tests.cpp; do
   [ ! -e "$h/$gone" ] || { echo "the handout has $gone"; exit 1; }
 done
 [ -z "$(find "$h" -name '*.bug' -o -name '*.variant' -o -name 'hidden.json')" ] || { echo "the handout has bugs, variants or hidden checkpoints"; exit 1; }
+# The judges come compiled: no judge's source, every judge's archive.
+[ -z "$(find "$h" -name 'judge.cpp' -o -name 'bench*.cpp')" ] || { echo "the handout has a judge's or a benchmark's source"; exit 1; }
+for m in m1 m2 m3 m4 m5; do
+  [ -f "$h/checkpoints/prebuilt/lib${m}_judge.a" ] || { echo "the handout has no prebuilt judge of $m"; exit 1; }
+done
 # Its README is the students' part of the course's: no sections for instructors or maintainers.
 grep -q "students' copy" "$h/README.md" || { echo "the handout's README does not say what it is"; exit 1; }
 grep -q "## For students" "$h/README.md" || { echo "the handout's README lost its section for students"; exit 1; }
@@ -44,6 +51,9 @@ grep -q "0 passed, $total failed" "$work/check.log" || { tail -n 20 "$work/check
 cp "$root/solutions/milestone1_lines/lines.cpp" "$h/milestone1_lines/lines.cpp"
 make -C "$h/build" check-m1 >"$work/check-m1.log" 2>&1 || { tail -n 30 "$work/check-m1.log"; exit 1; }
 grep -q "All checkpoints pass" "$work/check-m1.log" || { tail -n 20 "$work/check-m1.log"; exit 1; }
+# `make bench` says where it lives rather than failing.
+make -C "$h/build" bench >"$work/bench.log" 2>&1 || { cat "$work/bench.log"; echo "make bench failed in the handout"; exit 1; }
+grep -q "belongs to the instructor's repository" "$work/bench.log" || { cat "$work/bench.log"; echo "make bench in the handout does not say where it lives"; exit 1; }
 # Where SDL2 is installed, the viewer is built in the handout too, and its start-up check finds
 # the student's milestone 1 (the solution copied above, rebuilt) and the reference for the rest.
 if pkg-config --exists sdl2 2>/dev/null; then
