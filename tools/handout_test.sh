@@ -15,7 +15,7 @@ bash "$root/tools/export-handout" "$work/handout" --build "$build" --no-build
 h=$work/handout
 for gone in solutions tools/grading checkpoints/grader.cpp checkpoints/m1/bugs checkpoints/m1/variants \
            checkpoints/m3/judge.cpp checkpoints/m5/judge.cpp checkpoints/m5/bench.cpp checkpoints/bench_reference.cpp \
-           checkpoints/m5/oracle_tests.cpp; do
+           checkpoints/m5/oracle_tests.cpp tools/test.sh; do
   [ ! -e "$h/$gone" ] || { echo "the handout has $gone"; exit 1; }
 done
 [ -z "$(find "$h" -name '*.bug' -o -name '*.variant' -o -name 'hidden.json')" ] || { echo "the handout has bugs, variants or hidden checkpoints"; exit 1; }

@@ -282,7 +282,8 @@ private:
     struct State;
     std::unique_ptr<State> state_;
 };
-double watchdog_seconds();  // RASTER_WATCHDOG_SECONDS, default 5
+inline constexpr double kDefaultWatchdogSeconds = 5;  // make check's, unless the build sets another
+double watchdog_seconds();  // RASTER_WATCHDOG_SECONDS, default kDefaultWatchdogSeconds
 
 // "1-4, 6" for {1, 2, 3, 4, 6}; "TODO 5" / "TODOs 3-4" with todo_label.
 std::string todo_list(std::vector<int> todos);

@@ -127,8 +127,8 @@ Watchdog::~Watchdog() {
 }
 
 double watchdog_seconds() {
-    const double s = std::strtod(env_or("RASTER_WATCHDOG_SECONDS", "5").c_str(), nullptr);
-    return s > 0 ? s : 5;
+    const double s = std::strtod(env_or("RASTER_WATCHDOG_SECONDS", "").c_str(), nullptr);
+    return s > 0 ? s : kDefaultWatchdogSeconds;
 }
 
 std::string env_or(const char* name, const std::string& fallback) {

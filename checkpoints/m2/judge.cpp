@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -46,8 +47,11 @@ struct Verdict {
     bool on_edge = false;  // exact mode: the sample is exactly on an edge (fill rule decided)
 };
 
+// Every digit a point of these scenes has (sixteenths of 1e7 need 12): a message that says
+// -1e+07 for -9999999.9375 hides the very fraction it is about.
 std::string str(Vec2 p) {
     std::ostringstream s;
+    s.precision(12);
     s << "(" << p.x << ", " << p.y << ")";
     return s.str();
 }
@@ -898,14 +902,27 @@ void judge_numbers(const Scene& s, const cp::Artifacts& art, cp::Judgement& j) {
             g[k][1] = static_cast<i128>(std::llround(v[k].y * 16));
         }
         const i128 e = (g[1][0] - g[0][0]) * (g[2][1] - g[0][1]) - (g[1][1] - g[0][1]) * (g[2][0] - g[0][0]);
+        const double low = double(static_cast<std::uint64_t>(static_cast<std::int64_t>(e)) & 0xFFFF);
+        const std::string edge_hint =
+            "edge(a, b, p) = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x), in 64-bit integers on the sixteenths.";
         if (value("edge." + std::to_string(i)) != double(e)) {
             std::ostringstream m;
             m << "edge(v0, v1, v2) for vertices " << str(v[0]) << " " << str(v[1]) << " " << str(v[2]) << " gave "
               << value("edge." + std::to_string(i)) << ", expected " << double(e)
               << " = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) in sixteenths";
-            j.findings.push_back(finding("edge function", m.str(), "TODO 2",
-                                         "edge(a, b, p) = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x), in 64-bit "
-                                         "integers on the sixteenths."));
+            j.findings.push_back(finding("edge function", m.str(), "TODO 2", edge_hint));
+        } else if (value("edge." + std::to_string(i) + ".low") != low) {
+            // Right to 53 bits, wrong in the last ones: products rounded (computed in double).
+            std::ostringstream m;
+            // The exact value in digits (an int128 has no operator<<).
+            std::string digits;
+            for (i128 r = e < 0 ? -e : e; digits.empty() || r > 0; r /= 10) digits.insert(digits.begin(), char('0' + int(r % 10)));
+            m << "edge(v0, v1, v2) for vertices " << str(v[0]) << " " << str(v[1]) << " " << str(v[2])
+              << " must be exactly " << (e < 0 ? "-" : "") << digits << "; yours is close, but its last 16 bits are "
+              << value("edge." + std::to_string(i) + ".low") << ", not " << low
+              << ". A value this large needs 57 bits; a double keeps 53, so products computed in double (or float) "
+                 "come out a few units off. Multiply the int64 differences as int64";
+            j.findings.push_back(finding("edge function", m.str(), "TODO 2", edge_hint));
         }
         // Pixel x is in the box when its center x + 0.5 lies in [min x, max x] (of the snapped
         // vertices), clamped to the image.
@@ -944,11 +961,15 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
     // Stray writes: each function that made them (the trace says) loops over a box that was
     // not clamped to the image, which TODO 3 does.
     const auto stray = [](const std::string& function, long long count) {
+        // fill_triangle_aa loops over a box of its own (the pixels the vertices' box overlaps).
+        const bool aa = function.find("fill_triangle_aa") != std::string::npos;
         return finding("bounding box",
                        function + " asked to write " + cp::plural(double(count), "pixel") +
-                           " outside the image (Image::stray_writes): clamp the bounding box to the image (in "
-                           "bounding_box), and loop only over that box",
-                       "TODO 3");
+                           " outside the image (Image::stray_writes): " +
+                           (aa ? "clamp fill_triangle_aa's box (the pixels the vertices' box overlaps) to the image, "
+                                 "as bounding_box() clamps its own, and loop only over that box"
+                               : "clamp the bounding box to the image (in bounding_box), and loop only over that box"),
+                       aa ? "TODO 6" : "TODO 3");
     };
     j.findings = cp::stray_write_findings(
         art, stray, finding("bounding box", "clamp the bounding box to the image, and loop only over that box", "TODO 3"));
@@ -972,6 +993,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
         const auto other = art.images.find("other_winding");
         const bool sized = other != art.images.end() && other->second.width() == s.width && other->second.height() == s.height;
         long long differ = 0, colors_only = 0;  // colors_only: a gradient pixel filled in both orders
+        std::string first;  // where, for the student to look: "at (x, y): ... as listed, ... reversed"
         for (int y = 0; sized && y < s.height; ++y) {
             for (int x = 0; x < s.width; ++x) {
                 const Color a = img.at(x, y), b = other->second.at(x, y);
@@ -981,6 +1003,10 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
                 const bool tie = gradient && e.gradient_exact && e.grad_lo != e.grad_hi;
                 const bool counted = !(tie && within(a, e.grad_lo, e.grad_hi, 0) && within(b, e.grad_lo, e.grad_hi, 0));
                 differ += counted;
+                if (counted && first.empty()) {
+                    first = "; the first at (" + std::to_string(x) + ", " + std::to_string(y) + "): " + str(a) +
+                            " as listed, " + str(b) + " in the other order";
+                }
                 // Filled by the gradient triangle on top in both orders: neither is the color
                 // under it (which a fill-rule change would show).
                 colors_only += counted && gradient && a != e.under && b != e.under;
@@ -997,13 +1023,14 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
                               finding("winding",
                                       "listing each triangle's vertices in the other order filled the same pixels "
                                       "but changed the color of " + cp::plural(double(differ), "gradient pixel") +
-                                          " (see other_winding.png): the colors did not follow their vertices. "
-                                          "set_up exchanges v[1] and v[2] of a clockwise triangle (Setup::swapped "
-                                          "says so); fill_triangle_gradient must then exchange the colors of the "
-                                          "same two vertices, c1 and c2, so each color stays with its vertex",
+                                          first + " (see other_winding.png): the colors did not follow their vertices. "
+                                          "When a clockwise triangle's vertices are exchanged, fill_triangle_gradient "
+                                          "must exchange the colors of the same two vertices, so each color stays "
+                                          "with its vertex",
                                       "TODO 5",
-                                      "set_up reports the swap (Setup::swapped: v[1] and v[2] exchanged); after it, "
-                                      "exchange c1 and c2, not any other pair."));
+                                      "exchange the colors of exactly the two vertices set_up exchanged: c1 and c2 "
+                                      "for the skeleton's set_up (Setup::swapped says it exchanged v[1] and v[2]); "
+                                      "c0 and c1 if your own code exchanges v[0] and v[1]."));
         } else if (differ > 0 || (!sized && art.values.count(cp::kRunawayKey) == 0)) {
             // (No other_winding image after a runaway loop: the render stopped before drawing
             // it, the runaway finding says so, and there is nothing to compare.)
@@ -1016,8 +1043,9 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
             j.findings.insert(clockwise_wrong ? j.findings.begin() + std::ptrdiff_t(numbers_at) : j.findings.end(),
                               finding("winding",
                                          "listing each triangle's vertices in the other order changed " +
-                                             cp::plural(double(differ), "pixel") +
-                                             " (see other_winding.png): both windings must give the same pixels",
+                                             cp::plural(double(differ), "pixel") + first +
+                                             " (see other_winding.png, the picture drawn in the other order): both "
+                                             "windings must give the same pixels",
                                          "TODO 4a",
                                          clockwise_wrong
                                              ? "Your clockwise triangles (negative signed area as listed) are wrong nearly "

@@ -3,6 +3,7 @@
 #include "m2/render.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include "m2/scenes.h"
 #include "triangles.h"
@@ -54,7 +55,10 @@ void draw_scene(const Scene& s, raster::Image& img, cp::Artifacts& out) {
         out.values[key + "y0"] = r.y0;
         out.values[key + "x1"] = r.x1;
         out.values[key + "y1"] = r.y1;
-        out.values["edge." + std::to_string(i)] = double(cp::traced(out, "edge", [&] { return m2::edge(a, b, c); }));
+        const std::int64_t e = cp::traced(out, "edge", [&] { return m2::edge(a, b, c); });
+        out.values["edge." + std::to_string(i)] = double(e);
+        // Its last 16 bits too: a double holds 53 bits, and an edge near 1e7 needs 57.
+        out.values["edge." + std::to_string(i) + ".low"] = double(static_cast<std::uint64_t>(e) & 0xFFFF);
     }
     for (const Tri& t : s.tris) draw(out, img, t, false, false);
     if (s.check_winding) {

@@ -18,8 +18,9 @@ using namespace raster::colors;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kMaxCoordinate = 1 << 24;  // as pinned in triangles.h
 // m2.edge_and_box's last boxes, which no variation moves (see make_scenes).
-constexpr std::size_t kFixedBoxes = 2;
+constexpr std::size_t kFixedBoxes = 3;
 
 Tri solid(Vec2 a, Vec2 b, Vec2 c, Color color) { return {{a, b, c}, {color, color, color}, false, 0}; }
 Tri gradient(Vec2 a, Vec2 b, Vec2 c, Color ca, Color cb, Color cc) { return {{a, b, c}, {ca, cb, cc}, true, 0}; }
@@ -242,12 +243,18 @@ std::vector<Scene> make_scenes() {
                         aa({12.5, 34.5}, {30.5, 50.5}, {4.5, 62.5}, red, 16),
                         solid({34.2, 36.6}, {61.1, 40.3}, {45.7, 60.8}, kPalette[2])}));
     {
-        Scene s = make("m2.huge", "vertices at +/-1e7: clamp the bounding box, keep exact edges",
-                       "Clamp the bounding box to the image before looping, and evaluate edge functions "
+        Scene s = make("m2.huge", "vertices at +/-1e7 in all three fills: clamp the bounding box, keep exact edges",
+                       "Clamp the bounding box to the image before looping (in fill_triangle, "
+                       "fill_triangle_gradient and fill_triangle_aa alike), and evaluate edge functions "
                        "exactly: in float, 1e7 has no fractional digits left and edges move by pixels.",
                        {solid({-1e7, 10.25}, {1e7, 30.75}, {0.5, 1e7}, kPalette[0]),
                         solid({-1e7, -1e7}, {40.5, 2.0}, {1e7, -1e7}, kPalette[1]),
-                        solid({55.25, -1e7}, {62.0, 1e7}, {1e7, 0}, kPalette[2])});
+                        solid({55.25, -1e7}, {62.0, 1e7}, {1e7, 0}, kPalette[2]),
+                        // Wedges inside the first triangle, each with one vertex in the image and
+                        // two far away: a gradient (one color: its box is what is tested, not its
+                        // weights at 1e7) and 16 samples per pixel.
+                        gradient({44.6, 36.2}, {0.5e7, 1e7}, {44.9, 1e7}, kPalette[3], kPalette[3], kPalette[3]),
+                        aa({20.3, 40.7}, {-1e7, 47.9}, {-1e7, 1e7}, white, 4)});
         s.check_winding = true;
         all.push_back(s);
     }
@@ -288,7 +295,8 @@ std::vector<Scene> make_scenes() {
                        "snap rounds to the nearest 1/16; edge is cross(b - a, p - a) in sixteenths; the box "
                        "holds every pixel whose center is inside the vertices' range, clamped to the image.",
                        {});
-        s.numbers.snaps = {{1.03, 2.97}, {-1.03, -2.97}, {0.03125, -0.03125}, {1e7, -1e7}, {3e7, 0}, {kNaN, 1}};
+        s.numbers.snaps = {{1.03, 2.97}, {-1.03, -2.97}, {0.03125, -0.03125}, {1e7, -1e7}, {3e7, 0}, {kNaN, 1},
+                           {kMaxCoordinate, -kMaxCoordinate}};  // the range's end is in it
         s.numbers.boxes = {{{4.5, 4.5}, {20.5, 4.5}, {4.5, 20.5}},     // box edges on centers
                            {{4.4, 4.6}, {20.6, 4.4}, {4.6, 20.6}},     // just outside / inside
                            {{-10.2, -3.3}, {12.7, 70.1}, {80.0, 8.8}},  // clamped on all sides
@@ -299,7 +307,11 @@ std::vector<Scene> make_scenes() {
                            // empty box; a division that truncates toward zero gives 1. Kept as
                            // they are in every variation (kFixedBoxes): mirrored, they test nothing.
                            {{-3, 5}, {0.3, 5}, {-1, 8}},
-                           {{5, -3}, {8, 0.3}, {6, -1}}};
+                           {{5, -3}, {8, 0.3}, {6, -1}},
+                           // An edge of -51200007680000132 sixteenths squared: exact in 64-bit
+                           // integers; with its products rounded to double (53 bits) it is 4 off,
+                           // with or without a fused multiply-add.
+                           {{-9999999.9375, 1.0625}, {9999999.9375, 2.6875}, {0.4375, -9999999.6875}}};
         for (const auto& b : s.numbers.boxes) s.tris.push_back(solid(b[0], b[1], b[2], kPalette[s.tris.size() % 8]));
         all.push_back(s);
     }
@@ -397,7 +409,11 @@ Scene vary(const Scene& pub, Rng& rng) {
     // Moved and mirrored, the public scene's negative half may have become a positive one: keep
     // one negative half on each axis (-0.5 and -16.5 sixteenths, which std::llround sends away
     // from zero and floor(x + 0.5) toward it).
-    if (id == "m2.edge_and_box") s.numbers.snaps.push_back({-0.03125, -1.03125});
+    // And the range's end, which a mirror image moves.
+    if (id == "m2.edge_and_box") {
+        s.numbers.snaps.push_back({-0.03125, -1.03125});
+        s.numbers.snaps.push_back({-kMaxCoordinate, kMaxCoordinate});
+    }
     const std::size_t fixed_boxes = id == "m2.edge_and_box" ? kFixedBoxes : 0;
     for (std::size_t i = 0; i + fixed_boxes < s.numbers.boxes.size(); ++i) {
         for (Vec2& v : s.numbers.boxes[i]) v = sym(v);
