@@ -222,15 +222,16 @@ enum class Filter { kNearest, kBilinear, kNearestMip, kTrilinear };
 // (build_mipmaps) and then adds 1 to *mipmap_builds (when not null). Nothing is built for
 // lambda <= 0 (or NaN) or for kNearest and kBilinear. With lambda > 0 but only level 0 read (a
 // 1x1 texture; kNearestMip with lambda < 0.5) building is allowed, not required (see Only what
-// a scene needs above). A texture whose level 0 has no texels samples black, and however often
-// it is sampled counts at most one build (build_mipmaps leaves it as it is; the reference counts
-// none).
+// a scene needs above). A texture whose level 0 has no texels samples black; sampling it counts
+// no build or one, however often it is sampled, never one per call (build_mipmaps leaves such a
+// texture as it is; the reference counts none).
 Vec3 sample(Texture& texture, Vec2 uv, double lambda, Filter filter, long long* mipmap_builds);
 
 // ---- TODO 6: Blinn-Phong ----
 // One light's diffuse plus specular at a surface point (see Blinn-Phong above), unshadowed, in
 // levels: zero when dot(N, L) <= 0. normal, to_eye and to_light need not have length 1
-// (normalize each; a zero one makes the light add nothing, never NaN). A vector so short or so
+// (normalize each; a zero one, to_eye included, makes the light add nothing at all, its diffuse
+// term too, never NaN). A vector so short or so
 // long that x^2 + y^2 + z^2 underflows to 0 or overflows (components below about 1e-154 or above
 // about 1e154) may count as zero or be normalized exactly (std::hypot, or scaled first): both
 // are defined, and no checkpoint depends on which. The same holds for a light's direction.

@@ -60,7 +60,11 @@ inline std::map<std::string, cp::TopicAdvice> topics() {
         {"debug view", {"TODO 6", "gray = round(255 * (1 - d)); normal colors round(255 * (n + 1) / 2)"}},
         {"clipping", {"TODO 7", "clip in clip space against all six planes and lerp EVERY attribute with the same t"}},
         {"rasterizer", {"TODO 8", "milestone 2's snapping, edge functions and top-left rule, with depth and attributes"}},
-        {"per-pixel normals", {"TODO 8", "normalize the interpolated normal before lighting: it is shorter than 1 between vertices"}},
+        {"per-pixel normals", {"TODO 8", "interpolate the world normal perspective-correctly and normalize it before "
+                                         "lighting (between vertices it is shorter than 1); a world-space normal, not "
+                                         "a view-space one"}},
+        {"world position", {"TODO 8", "interpolate the world position perspective-correctly, as every attribute: a "
+                                      "point light's direction and distance depend on it"}},
         {"flat shading", {"TODO 9", "one light value per triangle: face normal of the world positions, at the centroid"}},
         {"gouraud", {"TODO 9", "light every vertex once, interpolate the lit colors (perspective-correctly, as every attribute)"}},
         {"face color", {"TODO 9", "face_colors[face], face being the triangle's index in mesh.triangles; past the end of face_colors, white"}},

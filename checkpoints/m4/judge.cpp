@@ -8,6 +8,7 @@
 #include "m4/judge.h"
 
 #include <algorithm>
+#include <functional>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -207,7 +208,9 @@ void judge_group(Group g, Ctx& c) {
             }
             if (get(v, "off.capacity") != 0) {
                 c.add("needs", "TODO 2: clear_frame without a depth test kept " + plural(get(v, "off.capacity"), "key") +
-                                   " of memory: release it (a vector keeps its capacity after clear())");
+                                   " of memory, allocated earlier or here: a frame without a depth test holds no "
+                                   "keys, so release them (std::vector<...>().swap(keys), or clear() and then "
+                                   "shrink_to_fit(): clear() alone keeps the capacity), and allocate none");
             }
             break;
         }
@@ -354,11 +357,63 @@ void judge_group(Group g, Ctx& c) {
                           "counts the ambient once, whatever the lights",
                       "add the ambient term once: B * (ambient + sum of the lights' I * max(0, N . L))");
             }
+            // Three more ways to be wrong in every failing case at once, each told once: the ambient
+            // term not multiplied by the base color (255 * A instead of B * A), a point light's L
+            // reversed (from the light to the surface), and a point light that fades with the
+            // squared distance (the header has no fall-off).
+            auto all_failing_match = [&](const std::function<Vec3(std::size_t)>& predict) {
+                return !flipped && !only_non_unit && !ambient_twice && !failing.empty() &&
+                       std::all_of(failing.begin(), failing.end(), [&](std::size_t i) {
+                           return same3(vec3(v, "shade" + std::to_string(i)), predict(i), 1e-6);
+                       });
+            };
+            auto points_changed = [&](std::size_t i, bool reverse) {
+                const auto& k = cases[i];
+                std::vector<LightSpec> ls = k.lights;
+                for (LightSpec& l : ls) {
+                    if (!l.point) continue;
+                    const Vec3 d = l.vector - k.position;
+                    const double d2 = raster::dot(d, d);
+                    if (reverse) {
+                        l.vector = k.position - d;  // the light mirrored through the point: L reversed
+                    } else {
+                        l.intensity = d2 > 0 ? l.intensity * (1 / d2) : Vec3{};
+                    }
+                }
+                return lambert(k.ambient, ls, k.base, k.position, k.normal);
+            };
+            std::string told;  // the one finding that explains every failing case, if any
+            std::string failing_list;
+            for (std::size_t f : failing) failing_list += (failing_list.empty() ? "" : ", ") + std::to_string(f);
+            if (all_failing_match([&](std::size_t i) {
+                    const auto& k = cases[i];
+                    return lambert(k.ambient, k.lights, k.base, k.position, k.normal) - ambient_of(i) + k.ambient * 255.0;
+                })) {
+                told = "lambert";
+                c.add("lambert", "TODO 5a: in every failing case (" + failing_list + ") the ambient part of shade()'s "
+                                 "result is 255 * ambient instead of B * ambient: the ambient light, like every light, "
+                                 "is multiplied by the base color: B * (ambient + sum of I * max(0, N . L))",
+                      "multiply the ambient term by the base color too: B * (ambient + sum of the lights' terms)");
+            } else if (all_failing_match([&](std::size_t i) { return points_changed(i, true); })) {
+                told = "light direction";
+                c.add("light direction", "TODO 5a: every failing case (" + failing_list + ") has a point light, and "
+                                         "each comes out exactly as with L from the light to the surface: for a point "
+                                         "light, L = normalize(light position - surface position), pointing TOWARD "
+                                         "the light",
+                      "L = normalize(light - position) for a point light, from the surface toward the light");
+            } else if (all_failing_match([&](std::size_t i) { return points_changed(i, false); })) {
+                told = "lambert";
+                c.add("lambert", "TODO 5a: every failing case (" + failing_list + ") has a point light, and each comes "
+                                 "out exactly as with the light's intensity divided by the squared distance: "
+                                 "depth_lighting.h's point lights do not fade with distance; only the direction L = "
+                                 "normalize(light - position) depends on where the light is",
+                      "no fall-off: a point light adds I * max(0, N . L), whatever its distance");
+            }
             std::string also;  // the other failing cases the reversal explains
             for (std::size_t i : failing) {
                 if (flipped && i > 1) also += (also.empty() ? "" : ", ") + std::to_string(i);
             }
-            for (std::size_t i = 0; i < cases.size() && !ambient_twice; ++i) {
+            for (std::size_t i = 0; i < cases.size() && !ambient_twice && told.empty(); ++i) {
                 const auto& k = cases[i];
                 const Vec3 want = lambert(k.ambient, k.lights, k.base, k.position, k.normal);
                 const Vec3 mine = vec3(v, "shade" + std::to_string(i));
@@ -450,11 +505,16 @@ void judge_group(Group g, Ctx& c) {
                 const std::string key = "color" + std::to_string(i);
                 const Color mine = color3(v, key);
                 if (mine == want[i]) continue;
-                const bool wrapped = i == 1 && mine.r == 44;
+                // Case 1's 300 and -20 wrap around to 44 and 236 when converted unclamped.
+                const std::string wrapped = i != 1 ? ""
+                                            : mine.r == 44 && mine.g == 236 ? "300 and -20 wrapped around to 44 and 236"
+                                            : mine.r == 44                  ? "300 wrapped around to 44"
+                                            : mine.g == 236                 ? "-20 wrapped around to 236"
+                                                                            : "";
                 c.add("clamp", "TODO 5b: to_color case " + std::to_string(i) + " (levels " + inputs[i] + ") gave " +
-                                   str(mine) + ", expected " +
-                                   str(want[i]) +
-                                   (wrapped ? ": 300 wrapped around to 44; clamp to [0, 255] before converting" : ""));
+                                   str(mine) + ", expected " + str(want[i]) +
+                                   (wrapped.empty() ? "" : ": " + wrapped + "; clamp each channel to [0, 255] before converting"),
+                      wrapped.empty() ? "" : "clamp each channel to [0, 255] first (below 0 is 0, above 255 is 255), then round");
             }
             break;
         }
@@ -704,6 +764,7 @@ const char* picture_topic(const std::string& id) {
         {"m4.extreme_input", "bad input"},          {"m4.needs", "needs"},
         {"m4.fill_triangle", "rasterizer"},         {"m4.flat_clipped", "flat shading"},
         {"m4.missing_face_colors", "face color"},   {"m4.shared_edges", "fill rule"},
+        {"m4.point_light_floor", "world position"},
     };
     const auto it = topics.find(id);
     return it == topics.end() ? "pipeline" : it->second;
@@ -743,6 +804,13 @@ std::pair<std::string, std::string> caller_of(const std::string& theme, Shade sh
     }
     if (theme == "perspective") {
         return {"rasterizer", "TODO 8: fill_triangle weighs the attributes with perspective_weights"};
+    }
+    if (theme == "world position") {
+        return {"world position", "TODO 8: for a point light, fill_triangle hands shade() the world position "
+                                  "interpolated with the perspective-correct weights of perspective_weights, as "
+                                  "every attribute (and draw_mesh gives each vertex model * position): with the "
+                                  "screen weights l_i each pixel of a receding floor is lit as a point nearer the "
+                                  "camera, and the pool of light slides toward the viewer"};
     }
     if (theme == "face color") {
         return {"face color", "TODO 9: draw_mesh colors a kFaceColor triangle with face_colors[face], face being its "
@@ -1462,6 +1530,32 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                     non_finite += bad;
                 }
             }
+            // Mesh triangles with an index out of range: draw_mesh skips them (reading them is
+            // undefined behaviour: whatever lies beside the positions is drawn, or the program crashes).
+            long long out_of_range = 0;
+            std::string indices;
+            for (const Item& it : panel.items) {
+                const int n = static_cast<int>(it.mesh.positions.size());
+                for (const auto& t : it.mesh.triangles) {
+                    bool bad = false;
+                    for (int i : t) {
+                        if (i >= 0 && i < n) continue;
+                        bad = true;
+                        indices += (indices.empty() ? "" : ", ") + std::to_string(i);
+                    }
+                    out_of_range += bad;
+                }
+            }
+            if ((name == "triangles_clipped" || name == "triangles_drawn" || name == "triangles_culled") && a > b &&
+                out_of_range > 0 && a - b <= 8.0 * double(out_of_range)) {
+                c.add("bad input", "TODO 9: " + num(a) + " " + st[2] + where + ", expected " + num(b) + ": this mesh has " +
+                                       plural(double(out_of_range), "triangle") + " with an index out of range (" +
+                                       indices + ", of " + plural(double(panel.items.empty() ? 0 : panel.items.front().mesh.positions.size()), "position") +
+                                       "), which draw_mesh skips before anything else: check 0 <= index < positions.size() "
+                                       "for all three (reading positions[40] is undefined behaviour, not an error C++ reports)");
+                triangles_off = true;  // the fragment counts after it only follow from it
+                continue;
+            }
             if (name == "triangles_clipped" && a > b && non_finite > 0 && a - b == double(non_finite)) {
                 c.add("bad input", "TODO 9: " + num(a) + " triangles sent to clip_triangle" + where + ", expected " + num(b) +
                                        ": the " + plural(double(non_finite), "triangle") + " with a NaN or infinite "
@@ -1489,6 +1583,13 @@ void judge_picture(Ctx& c, const cp::Artifacts& art, const cp::Artifacts& ref, c
                       "cull each fan triangle by its own screen positions (a vertex behind the eye flips the winding "
                       "of the unclipped triangle's projection), and fan the polygon as (0, i, i + 1), which keeps its "
                       "orientation";
+            } else if (b == 0 && name == "vertex_normals" &&
+                       std::any_of(panel.items.begin(), panel.items.end(), [](const Item& it) {
+                           return !it.mesh.positions.empty() && it.mesh.normals.size() == it.mesh.positions.size();
+                       })) {
+                why = ": the mesh brings its own normals (mesh.normals, one per position): use them; "
+                      "vertex_normals() runs only for a mesh whose normals are empty or of another size than its "
+                      "positions";
             } else if (b == 0) {
                 why = ": this scene does not need that stage (Needs), so it must not run";
             } else if (name == "triangles_clipped") {

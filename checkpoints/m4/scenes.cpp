@@ -192,7 +192,12 @@ std::vector<Scene> build() {
         const ScreenTri tiny_w{{Vec3{1.6, 24.4, 0.2}, Vec3{17.2, 56.7, 0.4}, Vec3{2.1, 94.2, 0.3}},
                                {1e-320, 1, 2},
                                {Vec3{230, 150, 60}, Vec3{120, 200, 120}, Vec3{90, 120, 230}}};
-        pn.screen_tris = {lit, crossing, gray, tiny_w};
+        // Over the top-right corner, most of it outside the image: the loop must stay inside it
+        // (clamp the bounding box; "never writes outside the image").
+        const ScreenTri corner{{Vec3{112.3, -30.6, 0.3}, Vec3{170.2, 2.3, 0.2}, Vec3{124.8, 13.1, 0.4}},
+                               {1, 2, 1.5},
+                               {Vec3{90, 200, 210}, Vec3{200, 200, 90}, Vec3{210, 120, 200}}};
+        pn.screen_tris = {lit, crossing, gray, tiny_w, corner};
         pn.depth_probes = {{40, 30}, {70, 50}, {90, 70}};
         s.panels.push_back(pn);
         add(s);
@@ -488,6 +493,42 @@ std::vector<Scene> build() {
         add(s);
     }
     {
+        Scene s = picture("m4.point_light_floor",
+                          "A floor lit per pixel by a low point light: world positions interpolated perspective-correctly",
+                          "interpolate the world position with the perspective-correct weights p_i, like every "
+                          "attribute: with the screen weights l_i a pixel is lit as if it were another point of "
+                          "the floor (nearer the camera), and the pool of light slides toward the viewer",
+                          {8, 3, 9, 5, 4, 7}, 192, 96);
+        // Left: the floor as two triangles reaching far into the distance, where screen and
+        // perspective-correct weights differ most. Right: the same floor as 6 x 6 tiles, where
+        // they differ little: the same light either way.
+        for (int p = 0; p < 2; ++p) {
+            Panel pn = panel(cam({0.03, 0.3, 3}, {0.02, -0.5, -2}), {}, 96 * p, 0, 96, 96, Shade::kPerPixel);
+            Mesh floor;
+            const int n = p == 0 ? 1 : 6;
+            const double x0 = -4, x1 = 4, z0 = 3, z1 = -25;
+            for (int i = 0; i <= n; ++i) {
+                for (int k = 0; k <= n; ++k) floor.positions.push_back({x0 + (x1 - x0) * k / n, -1, z0 + (z1 - z0) * i / n});
+            }
+            for (int i = 0; i < n; ++i) {
+                for (int k = 0; k < n; ++k) {
+                    const int a = i * (n + 1) + k, b = a + 1, c = a + n + 2, d = a + n + 1;
+                    floor.triangles.push_back({a, b, c});
+                    floor.triangles.push_back({a, c, d});
+                }
+            }
+            floor.normals.assign(floor.positions.size(), Vec3{0, 1, 0});
+            Item it = item(floor);
+            it.material = {210, 200, 180};
+            pn.items.push_back(it);
+            pn.cull = true;
+            pn.ambient = {0.05, 0.05, 0.05};
+            pn.lights = {point({0.2, -0.55, -3}, {1.4, 1.3, 1.1})};
+            s.panels.push_back(pn);
+        }
+        add(s);
+    }
+    {
         Scene s = picture("m4.normal_view", "Normals as colors (right: the ball seen from the side and above)",
                           "round(255 * (n + 1) / 2) of the WORLD-space normal, whatever the camera",
                           {6, 4, 9}, 192, 96);
@@ -697,7 +738,7 @@ Scene vary(const Scene& pub, Rng& rng) {
     if (is({"m4.occlusion_order", "m4.interpenetrating", "m4.depth_view", "m4.clear_between_frames", "m4.flat_sphere",
             "m4.gouraud_sphere", "m4.per_pixel_sphere", "m4.nonuniform_scale", "m4.normal_view", "m4.needs",
             "m4.overflow", "m4.perspective_checker", "m4.screen_space_checker", "m4.light_behind",
-            "m4.coplanar", "m4.flat_clipped", "m4.missing_face_colors"})) {
+            "m4.coplanar", "m4.flat_clipped", "m4.missing_face_colors", "m4.point_light_floor"})) {
         const Vec3 d{rng.uniform(-12, 12) / 100.0, rng.uniform(-12, 12) / 100.0, rng.uniform(-12, 12) / 100.0};
         for (Panel& p : s.panels) p.camera.eye = p.camera.eye + d;
     }

@@ -463,9 +463,13 @@ void judge_wrap(Ctx& c) {
             } else if (mirror_off_by_one) {
                 why = ": mirrored repeat maps m = i mod 2n in [n, 2n) to 2n - 1 - m (the edge texel is read twice at "
                       "the turn, as n - 1 then n - 1 again), not 2n - m";
-            } else if (k.i < 0 && k.mode != Wrap::kClampToEdge && (mine == trunc || mine == -trunc)) {
+            } else if (k.i < 0 && k.mode != Wrap::kClampToEdge && mine == trunc) {
                 why = ": std::fmod (and %) truncate toward zero and keep the sign of i, so -1 mod n is -1; add n (2n "
                       "for mirrored repeat) when the result is negative, so -1 becomes n - 1";
+            } else if (k.i < 0 && k.mode != Wrap::kClampToEdge && mine == -trunc) {
+                why = ": that is |i| mod n, a mirror image of the pattern about 0: -1 must land on n - 1 (the texel "
+                      "left of 0 is the last one), not on 1; take i mod n with a result in [0, n), adding n (2n for "
+                      "mirrored repeat) when it is negative";
             } else if (std::abs(k.i) > 1e15) {
                 why = ": a huge index must wrap exactly: std::fmod is exact for any finite double (a cast to an "
                       "integer type overflows, and i - n floor(i / n) rounds once |i| passes 2^52)";
@@ -1303,7 +1307,8 @@ void judge_shadow(Ctx& c) {
                   "the 5 outside the map are lit (not the edge texels again): 5 of 9";
         } else if (i == 17) {
             why = ": p falls in column -1, just outside the map, but with PCF the 3x3 around it still has column 0's 3 "
-                  "texels inside the map, which shadow it: 6 of 9 (only a 3x3 wholly outside the map is wholly lit)";
+                  "texels inside the map, which shadow it, and 6 outside it, which are lit: a factor of 6 / 9 (only a 3x3 "
+                  "wholly outside the map is wholly lit)";
         } else if (i == 18) {
             why = ": here x = -0.3 texels: column floor(-0.3) = -1 is outside the map, so the point is lit; a cast to int "
                   "truncates toward zero and reads column 0";
@@ -2187,7 +2192,9 @@ void judge_depth_ties(Ctx& c, const raster::Image& mine, const cp::Artifacts& re
 void judge_lod_center(Ctx& c, const raster::Image& mine, const cp::Artifacts& ref, const Panel& panel) {
     const auto ref_it = ref.images.find("main");
     if (ref_it == ref.images.end()) return;
-    cp::PixelVote corner;
+    // Two mistakes, each voted on its own: lambda at the corner, and lambda from derivatives that
+    // leave out w (those of the screen-space uv: with every w_i = 1).
+    cp::PixelVote corner, without_w;
     for (const ScreenTri& t : panel.screen_tris) {
         const MaterialSpec& m = t.material;
         if (m.texture < 0 || std::size_t(m.texture) >= panel.textures.size() ||
@@ -2213,20 +2220,28 @@ void judge_lod_center(Ctx& c, const raster::Image& mine, const cp::Artifacts& re
                 for (int i = 0; i < 3; ++i) sum += q[i] = l[i] / k.w[std::size_t(i)];
                 Vec2 uv{};
                 for (int i = 0; i < 3; ++i) uv = uv + k.uv[std::size_t(i)] * (q[i] / sum);
-                auto color_with_lambda_at = [&](double lx, double ly) {
+                auto color_with_lambda_at = [&](double lx, double ly, bool perspective) {
                     k.x = lx;
                     k.y = ly;
-                    const Derivs d = t_derivatives(k);
+                    const Derivs d = t_derivatives(k, perspective);
                     const double lambda = t_lambda(d.du_dx, d.dv_dx, d.du_dy, d.dv_dy, k.width, k.height);
                     return to_color(t_sample(pyr, uv, lambda, m.filter, spec.wrap_u, spec.wrap_v));
                 };
-                const Color at_center = color_with_lambda_at(px, py), at_corner = color_with_lambda_at(x, y);
+                const Color at_center = color_with_lambda_at(px, py, true);
                 if (max_diff(ref_it->second.at(panel.x0 + x, panel.y0 + y), at_center) > 3) continue;
-                corner.cast(mine.at(panel.x0 + x, panel.y0 + y), at_center, at_corner);
+                const Color got = mine.at(panel.x0 + x, panel.y0 + y);
+                corner.cast(got, at_center, color_with_lambda_at(x, y, true));
+                without_w.cast(got, at_center, color_with_lambda_at(px, py, false));
             }
         }
     }
-    if (corner.names_mistake()) {
+    if (without_w.names_mistake() && without_w.mistake_like() >= corner.mistake_like()) {
+        c.add("rasterizer", "TODO 5: " + without_w.tally() +
+                                " of the triangles with a mip filter where it changes the level, your colors are "
+                                "those of lambda from the derivatives of the SCREEN-SPACE uv (every w_i taken as 1): "
+                                "pass uv_derivatives the clip-space w of the three vertices, so lambda follows the "
+                                "perspective-correct uv the pixel is sampled at");
+    } else if (corner.names_mistake()) {
         c.add("rasterizer", "TODO 5: " + corner.tally() +
                                 " of the triangles with a mip filter where the level changes between a pixel's "
                                 "corner and its center, your colors are those of lambda taken at the pixel's CORNER "
