@@ -508,9 +508,10 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
                "has its center exactly on an edge and is" + rule_rest, "TODO 4b",
                "Once the area is positive, edge a->b is top when b.y == a.y and b.x > a.x, left when b.y < a.y; a zero "
                "edge value counts only for those (set_up marks them, covers applies it)."};
-    Tally last_row{"bounding box", "in the last row or column of a triangle's bounding box are missing",
-                   "in the last row or column of a triangle's bounding box is missing", "TODO 3",
-                   "PixelRect's ends are exclusive: x1 is one past the last column whose center is in range."};
+    Tally last_row{"bounding box", "in the last row or column of a triangle's bounding box (or of the image) are missing",
+                   "in the last row or column of a triangle's bounding box (or of the image) is missing", "TODO 3",
+                   "PixelRect's ends are exclusive: x1 is one past the last column whose center is in range, and "
+                   "clamped to the image it is at most width (not width - 1), y1 at most height."};
     Tally colors{"barycentric", "have the wrong interpolated color", "has the wrong interpolated color", "TODO 5",
                  "The weight of vertex k is the edge value of the edge OPPOSITE it divided by area2, in floating "
                  "point (integer division gives 0); round each channel to nearest with raster::to_channel."};
@@ -646,6 +647,7 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
             const Expectation e = expect_pixel(s, shapes, x, y);
             const Color got = img.at(x, y);
             const bool gradient_top = e.top >= 0 && s.tris[e.top].gradient;
+            const bool image_edge = x == s.width - 1 || y == s.height - 1;
             has_gradient |= gradient_top;
             if (e.aa_tris > 0) {
                 // Anti-aliased triangles on top: each channel must match the covered-sample
@@ -697,8 +699,9 @@ void judge_pixels(const Scene& s, const std::vector<Shape>& shapes, const Image&
                 bad_n.add(x, y);
             } else if (e.top < 0) {
                 (plain && (only_aa || near_only(x, y, true)) ? aa_extra : extra).add(x, y);
-            } else if (got == e.under) {
-                (e.in_last ? last_row : gradient_top ? missing_gradient : missing).add(x, y);
+            } else if (got == e.under || (image_edge && got == raster::colors::black)) {
+                // (In the image's last column or row, nothing drawn at all: no triangle's box reached it.)
+                (e.in_last || image_edge ? last_row : gradient_top ? missing_gradient : missing).add(x, y);
             } else if (gradient_top) {
                 ++wrong_gradient_colors[got];
                 colors.add(x, y, " is " + str(got) + ", expected " + str(e.want) +
@@ -993,6 +996,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
         const auto other = art.images.find("other_winding");
         const bool sized = other != art.images.end() && other->second.width() == s.width && other->second.height() == s.height;
         long long differ = 0, colors_only = 0;  // colors_only: a gradient pixel filled in both orders
+        long long black_in_one = 0;             // of those, black in one order: negative or zero weights
         std::string first;  // where, for the student to look: "at (x, y): ... as listed, ... reversed"
         for (int y = 0; sized && y < s.height; ++y) {
             for (int x = 0; x < s.width; ++x) {
@@ -1010,6 +1014,7 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
                 // Filled by the gradient triangle on top in both orders: neither is the color
                 // under it (which a fill-rule change would show).
                 colors_only += counted && gradient && a != e.under && b != e.under;
+                black_in_one += counted && gradient && (a == raster::colors::black) != (b == raster::colors::black);
             }
         }
         if (sized && differ > 0 && colors_only == differ) {
@@ -1019,8 +1024,24 @@ cp::Judgement judge(const std::string& id, const cp::Artifacts& art, const cp::A
             // are what moved): a barycentric finding about the same pixels would send the student
             // to the weights, which are right for the other winding.
             const bool clockwise_wrong = stats.cw_wrong > 0 && stats.cw_wrong * 10 >= stats.wrong * 9;
+            // Black in one order nearly everywhere: that order's weights are negative (divided by
+            // the signed area as listed, before the swap made it positive), not exchanged colors.
+            const bool negative_weights = black_in_one * 10 >= differ * 9;
             j.findings.insert(clockwise_wrong ? j.findings.begin() + std::ptrdiff_t(numbers_at) : j.findings.end(),
-                              finding("winding",
+                              negative_weights
+                                  ? finding("winding",
+                                            "listing each triangle's vertices in the other order filled the same "
+                                            "pixels, but " + cp::plural(double(black_in_one), "gradient pixel") +
+                                                " came out black in one of the orders" + first +
+                                                " (see other_winding.png): there every weight was negative or zero, "
+                                                "as when the edge values of the swapped (counter-clockwise) triangle "
+                                                "are divided by the area as listed, which is negative for a "
+                                                "clockwise triangle",
+                                            "TODO 5",
+                                            "after set_up's swap, divide by the swapped triangle's area2 (positive), "
+                                            "the one its edge values belong to; and exchange the colors of the two "
+                                            "vertices it exchanged.")
+                                  : finding("winding",
                                       "listing each triangle's vertices in the other order filled the same pixels "
                                       "but changed the color of " + cp::plural(double(differ), "gradient pixel") +
                                           first + " (see other_winding.png): the colors did not follow their vertices. "
