@@ -281,7 +281,8 @@ struct FillState {
 // Fills one triangle (both windings, milestone 2's snapping and top-left fill rule: a center on
 // an edge two triangles share is drawn by exactly one of them) into the frame.
 // Per covered pixel center: the screen weights l; d from them; with depth_test, the key
-// depth_key(format, z_ndc, w) with the pixel's w = 1 / sum(l_i / w_i) and the depth test; the color of its mode; then
+// depth_key(format, z_ndc, w) (format: frame.format, which clear_frame set from needs.depth_format,
+// so the two agree) with the pixel's w = 1 / sum(l_i / w_i) and the depth test; the color of its mode; then
 // color and key written. A fragment's attributes are interpolated (and a kPerPixel fragment
 // lit) only when it gets a color: always without a depth test, and with one only when its key
 // is <= the stored key (a hidden fragment costs nothing; a tie needs the color to decide).

@@ -85,6 +85,24 @@ Item item(Mesh mesh) {
     return it;
 }
 
+// The floor y = -1 over x in [x0, x1] and z from z0 to z1, as n x n tiles of two triangles each,
+// facing up.
+Mesh floor_mesh(int n, double x0, double x1, double z0, double z1) {
+    Mesh floor;
+    for (int i = 0; i <= n; ++i) {
+        for (int k = 0; k <= n; ++k) floor.positions.push_back({x0 + (x1 - x0) * k / n, -1, z0 + (z1 - z0) * i / n});
+    }
+    for (int i = 0; i < n; ++i) {
+        for (int k = 0; k < n; ++k) {
+            // a, b along this row (x growing), d, c along the next (toward z1): facing up
+            const int a = i * (n + 1) + k, b = a + 1, c = a + n + 2, d = a + n + 1;
+            floor.triangles.push_back({a, b, c});
+            floor.triangles.push_back({a, c, d});
+        }
+    }
+    return floor;
+}
+
 constexpr auto numbers = &cp::numbers_scene<Scene>;
 constexpr auto picture = &cp::picture_scene<Scene>;
 
@@ -469,21 +487,7 @@ std::vector<Scene> build() {
         // the far middle one.
         for (int p = 0; p < 2; ++p) {
             Panel pn = panel(cam({0.02, 0.7, 3}, {0.01, -0.6, -1.5}), {}, 96 * p, 0, 96, 96, Shade::kFlat);
-            Mesh floor;
-            const int n = p == 0 ? 1 : 3;
-            const double x0 = -5, x1 = 5, z0 = 5, z1 = -7;
-            for (int i = 0; i <= n; ++i) {
-                for (int k = 0; k <= n; ++k) floor.positions.push_back({x0 + (x1 - x0) * k / n, -1, z0 + (z1 - z0) * i / n});
-            }
-            for (int i = 0; i < n; ++i) {
-                for (int k = 0; k < n; ++k) {
-                    // a, b along this row (x growing), d, c along the next (toward -z): facing up
-                    const int a = i * (n + 1) + k, b = a + 1, c = a + n + 2, d = a + n + 1;
-                    floor.triangles.push_back({a, b, c});
-                    floor.triangles.push_back({a, c, d});
-                }
-            }
-            Item it = item(floor);
+            Item it = item(floor_mesh(p == 0 ? 1 : 3, -5, 5, 5, -7));
             it.material = {220, 200, 170};
             pn.items.push_back(it);
             pn.ambient = {0.08, 0.08, 0.08};
@@ -504,19 +508,7 @@ std::vector<Scene> build() {
         // they differ little: the same light either way.
         for (int p = 0; p < 2; ++p) {
             Panel pn = panel(cam({0.03, 0.3, 3}, {0.02, -0.5, -2}), {}, 96 * p, 0, 96, 96, Shade::kPerPixel);
-            Mesh floor;
-            const int n = p == 0 ? 1 : 6;
-            const double x0 = -4, x1 = 4, z0 = 3, z1 = -25;
-            for (int i = 0; i <= n; ++i) {
-                for (int k = 0; k <= n; ++k) floor.positions.push_back({x0 + (x1 - x0) * k / n, -1, z0 + (z1 - z0) * i / n});
-            }
-            for (int i = 0; i < n; ++i) {
-                for (int k = 0; k < n; ++k) {
-                    const int a = i * (n + 1) + k, b = a + 1, c = a + n + 2, d = a + n + 1;
-                    floor.triangles.push_back({a, b, c});
-                    floor.triangles.push_back({a, c, d});
-                }
-            }
+            Mesh floor = floor_mesh(p == 0 ? 1 : 6, -4, 4, 3, -25);
             floor.normals.assign(floor.positions.size(), Vec3{0, 1, 0});
             Item it = item(floor);
             it.material = {210, 200, 180};
