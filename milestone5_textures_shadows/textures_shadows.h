@@ -283,8 +283,9 @@ struct ShadowMap {
 // interpolated one before the map (the geometry's slope, which is what the depth map has).
 // fill_triangle never asks where the shading normal has dot(n, -direction) <= 0, so no
 // checkpoint tests the answer there. With the interpolated normal it may ask where THAT one has
-// c <= 0 (the map turned the shading normal toward the light): the bias there is free, the
-// capped constant + slope * 10 (the reference's) or the formula as it stands (a negative tan).
+// c <= 0 (the map turned the shading normal toward the light): the bias there is free, either
+// the capped constant + slope * 10 (the reference's) or the formula applied as it is, whose
+// tan(theta) = sqrt(1 - c^2) / c is then negative (so its slope term lowers the bias).
 double shadow_factor(const ShadowMap& map, Vec3 p, Vec3 n, Vec3 direction, const ShadowSettings& settings);
 
 // ---- TODO 5 and TODO 9: the textured, lit, shadowed pipeline ----
@@ -349,21 +350,25 @@ struct FillState {
 };
 
 // TODO 5: one triangle (both windings, milestone 2's snapping and fill rule) into the frame,
-// which always has a float-Z depth buffer. Per covered pixel center: the screen weights l, the
-// key m4::depth_key(kFloatZ, z_ndc, w) of the screen-interpolated z_ndc (a float-Z key ignores
-// w: pass the fragment's w, 1 / sum(l_i / w_i) as in milestone 4, or any); a fragment whose key is
-// kClearKey or greater than the stored key is dropped before anything else (not shaded); else the
-// perspective-correct weights (m4::perspective_weights) interpolate uv, normal and world
-// position; the base color is the material's color or sample() of its texture (with lambda from
-// uv_derivatives at the pixel center, from the vertex positions the screen weights come from
-// (snapped as the reference, or unsnapped: where that moves lambda across kNearestMip's
-// rounding boundary k + 0.5 either level is tolerated, see README.md section 5), and
-// level_of_detail on level 0's size, for mip filters only); unlit materials stop
-// there; lit ones normalize the normal, perturb it by the normal map if any (reading the map
-// where state.tangent is not valid is free, see Only what a scene needs above), and add ambient
-// and each light (blinn_phong with that normal, times shadow_factor for a light with a map,
-// whose n is free, see there; skipped where dot(N, L) <= 0 for that same, perturbed N); then
-// m4::to_color and the depth test m4::depth_passes decide the write.
+// which always has a float-Z depth buffer. Per covered pixel center, in this order:
+// 1. the screen weights l, and the key m4::depth_key(kFloatZ, z_ndc, w) of the z_ndc
+//    interpolated with l (a float-Z key ignores w: pass the fragment's w, 1 / sum(l_i / w_i) as
+//    in milestone 4, or any);
+// 2. a fragment whose key is kClearKey or greater than the stored key is dropped here, before
+//    anything else (not shaded);
+// 3. the perspective-correct weights (m4::perspective_weights) interpolate uv, normal and world
+//    position;
+// 4. the base color: the material's color, or sample() of its texture; for mip filters only,
+//    with lambda = level_of_detail(uv_derivatives(...) at the pixel center, level 0's size),
+//    the derivatives taken from the vertex positions the screen weights come from (snapped as
+//    the reference's, or unsnapped: where that moves lambda across kNearestMip's rounding
+//    boundary k + 0.5 either level is tolerated, see README.md section 5);
+// 5. an unlit material stops here. A lit one normalizes the normal, perturbs it by the normal
+//    map if any (reading the map where state.tangent is not valid is free, see Only what a scene
+//    needs above), and adds ambient and each light: blinn_phong with that normal, times
+//    shadow_factor for a light with a map (whose n is free, see there), skipped where
+//    dot(N, L) <= 0 for that same, perturbed N;
+// 6. m4::to_color, and the depth test m4::depth_passes decides the write.
 // Counts into stats what it does (fragments, shaded, texture_samples, ...). triangles_drawn is
 // counted once per fan triangle, either here as fill_triangle is entered or by draw_scene as it
 // passes one (the reference does the latter), not both.
