@@ -504,8 +504,9 @@ std::vector<Scene> build() {
                           "the floor (nearer the camera), and the pool of light slides toward the viewer",
                           {8, 3, 9, 5, 4, 7}, 192, 96);
         // Left: the floor as two triangles reaching far into the distance, where screen and
-        // perspective-correct weights differ most. Right: the same floor as 6 x 6 tiles, where
-        // they differ little: the same light either way.
+        // perspective-correct weights differ most (with the screen weights the pool of light
+        // breaks up along the diagonal the two share). Right: the same floor as 6 x 6 tiles,
+        // where they differ less, though still beyond the tolerance near the light.
         for (int p = 0; p < 2; ++p) {
             Panel pn = panel(cam({0.03, 0.3, 3}, {0.02, -0.5, -2}), {}, 96 * p, 0, 96, 96, Shade::kPerPixel);
             Mesh floor = floor_mesh(p == 0 ? 1 : 6, -4, 4, 3, -25);
